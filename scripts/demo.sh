@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# README command 1: set up, build, and run the main job on the built-in
+# default scene, writing images into out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh release
+export VK_DRIVER_FILES="${VK_DRIVER_FILES:-/usr/share/vulkan/icd.d/lvp_icd.x86_64.json}"
+bin=build/release/shadelab
+mkdir -p out
+"$bin" info
+for mode in flat gouraud phong blinn-phong; do
+  "$bin" render --mode "$mode" --size 1280x720 -o "out/default-$mode.png"
+done
+"$bin" compare -o out/compare.png
+echo "demo: images written to out/"
+ls -1 out

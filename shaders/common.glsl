@@ -1,0 +1,10 @@
+// Descriptor bindings and per-draw data shared by the forward shaders.
+#ifndef COMMON_GLSL
+#define COMMON_GLSL
+#include "interface.h"
+
+layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameData frame; };
+layout(set = 0, binding = BINDING_OBJECTS, std430) readonly buffer ObjectBlock { ObjectData objects[]; };
+layout(push_constant) uniform DrawConstants { uint objectIndex; } draw;
+layout(constant_id = SPEC_SHADING_MODEL) const int shadingModel = SHADING_PHONG;
+#endif

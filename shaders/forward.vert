@@ -1,0 +1,29 @@
+#version 460
+// Forward pass, vertex stage. Gouraud evaluates the illumination equation
+// here, at each vertex with its averaged normal; the other models pass the
+// eye-space position and normal on.
+#extension GL_GOOGLE_include_directive : require
+#include "lighting.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+
+layout(location = 0) out vec3 outPosition;  // eye space
+layout(location = 1) out vec3 outNormal;    // eye space, not normalised
+layout(location = 2) out vec3 outColor;     // Gouraud: lit vertex colour
+layout(location = 3) flat out vec3 outFlatColor;
+
+void main() {
+  ObjectData object = objects[draw.objectIndex];
+  vec4 eye = object.modelView * vec4(inPosition, 1.0);
+  outPosition = eye.xyz;
+  // Normals transform by the inverse transpose of the model-view matrix.
+  outNormal = mat3(object.normalMatrix) * inNormal;
+  outColor = shadingModel == SHADING_GOURAUD
+                 ? illuminate(eye.xyz, outNormal, objectMaterial(object), false)
+                 : vec3(0.0);
+  outFlatColor = vec3(0.0);
+  gl_Position = frame.projection * eye;
+}

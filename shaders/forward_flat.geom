@@ -1,0 +1,37 @@
+#version 460
+// Flat shading: one colour per triangle, from the illumination equation
+// evaluated once at the centroid with the triangle's geometric normal (not
+// a vertex's averaged normal). A geometry shader sees the whole triangle,
+// which neither the vertex nor the fragment stage does.
+#extension GL_GOOGLE_include_directive : require
+#include "lighting.glsl"
+
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+layout(location = 0) in vec3 inPosition[];
+layout(location = 1) in vec3 inNormal[];
+layout(location = 2) in vec3 inColor[];
+layout(location = 3) flat in vec3 inFlatColor[];
+
+layout(location = 0) out vec3 outPosition;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec3 outColor;
+layout(location = 3) flat out vec3 outFlatColor;
+
+void main() {
+  vec3 p0 = inPosition[0], p1 = inPosition[1], p2 = inPosition[2];
+  // Counter-clockwise winding seen from the front gives the outward normal.
+  vec3 faceNormal = cross(p1 - p0, p2 - p0);
+  vec3 center = (p0 + p1 + p2) / 3.0;
+  vec3 color = illuminate(center, faceNormal, objectMaterial(objects[draw.objectIndex]), false);
+  for (int i = 0; i < 3; ++i) {
+    gl_Position = gl_in[i].gl_Position;
+    outPosition = inPosition[i];
+    outNormal = faceNormal;
+    outColor = color;
+    outFlatColor = color;
+    EmitVertex();
+  }
+  EndPrimitive();
+}

@@ -1,0 +1,60 @@
+// Limits, binding numbers and the structs shared by C++ and GLSL.
+// Included by both sides: in C++ the GLSL type names alias GLM types, so each
+// struct is written once. Only vec4/mat4/ivec4 members are used, so std140
+// and std430 layouts equal the C++ layout (checked by static_asserts in
+// src/core/gpu_types.cpp).
+#ifndef SHADELAB_INTERFACE_H
+#define SHADELAB_INTERFACE_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace shadelab::gpu {
+using vec4 = glm::vec4;
+using ivec4 = glm::ivec4;
+using mat4 = glm::mat4;
+#endif
+
+#define MAX_LIGHTS 8
+
+// Descriptor set 0
+#define BINDING_FRAME 0    // uniform buffer: FrameData
+#define BINDING_OBJECTS 1  // storage buffer: ObjectData[]
+
+// Specialization constant ids and the values of SHADING_MODEL
+#define SPEC_SHADING_MODEL 0
+#define SHADING_FLAT 0
+#define SHADING_GOURAUD 1
+#define SHADING_PHONG 2
+#define SHADING_BLINN_PHONG 3
+#define SHADING_UNLIT 4  // constant colour: the timing floor the others are measured against
+
+#define LIGHT_POINT 0
+#define LIGHT_DIRECTIONAL 1
+
+// A light in eye space.
+struct GpuLight {
+  vec4 position;     // point: eye-space position; directional: eye-space direction *towards* the light
+  vec4 intensity;    // rgb = Ip per channel
+  vec4 attenuation;  // f_att = 1 / (a + b d + c d^2): xyz = (a, b, c)
+  ivec4 type;        // x = LIGHT_POINT or LIGHT_DIRECTIONAL
+};
+
+struct FrameData {
+  mat4 projection;
+  vec4 ambient;      // rgb = Ia
+  ivec4 lightCount;  // x
+  GpuLight lights[MAX_LIGHTS];
+};
+
+struct ObjectData {
+  mat4 modelView;
+  mat4 normalMatrix;  // inverse transpose of modelView's upper 3x3, padded to a mat4
+  vec4 ka;            // rgb
+  vec4 kd;            // rgb
+  vec4 ks;            // rgb, w = shininess n
+};
+
+#ifdef __cplusplus
+}  // namespace shadelab::gpu
+#endif
+#endif

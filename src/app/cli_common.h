@@ -1,0 +1,23 @@
+#pragma once
+// Helpers shared by the subcommands: option parsing that reports bad values
+// as InputError, and the Vulkan context every command opens the same way.
+#include <memory>
+#include <string>
+
+#include "app/commands.h"
+#include "core/context.h"
+
+namespace shadelab {
+
+struct Size {
+  uint32_t width = 0;
+  uint32_t height = 0;
+};
+// "1280x720" -> {1280, 720}; throws InputError naming the option and value.
+Size parseSize(const std::string& text, const std::string& option);
+
+std::unique_ptr<Context> openContext(const GlobalOptions& global);
+// After a command: with validation on, any message turns success into exit 1.
+int finishWithValidation(const Context& context, int exitCode);
+
+}  // namespace shadelab

@@ -1,0 +1,81 @@
+#include <cstdio>
+#include <memory>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "core/errors.h"
+#include "core/image.h"
+#include "core/scene_loader.h"
+#include "core/stats.h"
+#include "passes/renderer.h"
+
+namespace shadelab {
+namespace {
+
+struct RenderOptions {
+  std::string scene;
+  std::string output;
+  std::string size = "1280x720";
+  std::string mode = "phong";
+  uint32_t frames = 1;
+};
+
+void printTimings(const RenderStats& stats) {
+  // The first frames include lavapipe's lazy pipeline compile: report them
+  // apart and take the steady statistics over the rest.
+  size_t warmup = std::min<size_t>(stats.deviceMs.size() / 10 + 1, stats.deviceMs.size() - 1);
+  std::vector<double> device(stats.deviceMs.begin() + long(warmup), stats.deviceMs.end());
+  std::vector<double> wall(stats.wallMs.begin() + long(warmup), stats.wallMs.end());
+  std::printf("first frame: %.2f ms wall, %.2f ms device\n", stats.wallMs.front(),
+              stats.deviceMs.front());
+  std::printf("steady (%zu frames after %zu warm-up): device median %.3f ms, p95 %.3f ms; "
+              "wall median %.3f ms, p95 %.3f ms\n",
+              device.size(), warmup, median(device), percentile(device, 95.0), median(wall),
+              percentile(wall, 95.0));
+}
+
+int runRender(const RenderOptions& options, const GlobalOptions& global) {
+  Size size = parseSize(options.size, "--size");
+  std::optional<ShadingModel> model = parseShadingModel(options.mode);
+  if (!model) throw InputError("--mode '" + options.mode + "': expected one of flat, gouraud, "
+                               "phong, blinn-phong, unlit");
+  checkOutputPath(options.output);  // fail before the expensive work
+  Scene scene = loadScene(options.scene);
+
+  std::unique_ptr<Context> context = openContext(global);
+  RenderResult result;
+  {
+    Renderer renderer(*context);
+    result = renderer.renderToImage(scene, {size.width, size.height, *model, options.frames});
+  }
+  writeImage(result.image, options.output);
+  std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws)\n",
+              options.output.c_str(), size.width, size.height, scene.name.c_str(),
+              options.mode.c_str(), static_cast<unsigned long long>(result.stats.triangles),
+              result.stats.drawCalls);
+  if (options.frames > 1) printTimings(result.stats);
+  return finishWithValidation(*context, 0);
+}
+
+}  // namespace
+
+CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* command = app.add_subcommand("render", "Render a scene headless to an image file");
+  command->add_option("scene", options->scene,
+                      "Built-in scene name or scene file (default: the built-in default scene)");
+  command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
+      ->required();
+  command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")
+      ->capture_default_str();
+  command->add_option("--mode", options->mode, "Shading model: flat, gouraud, phong, blinn-phong, "
+                      "unlit (constant colour, the timing floor)")
+      ->capture_default_str();
+  command->add_option("--frames", options->frames,
+                      "Frames to draw (2 in flight); above 1, prints frame-time statistics")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 100000u));
+  return [options, &global] { return runRender(*options, global); };
+}
+
+}  // namespace shadelab

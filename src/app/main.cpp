@@ -1,0 +1,47 @@
+// shadelab: one binary, subcommands. main only parses and dispatches; each
+// command lives in its own cmd_*.cpp.
+#include <cstdio>
+#include <map>
+
+#include "app/commands.h"
+#include "core/errors.h"
+
+#ifndef SHADELAB_VALIDATION_DEFAULT
+#define SHADELAB_VALIDATION_DEFAULT 0
+#endif
+
+int main(int argc, char** argv) {
+  using namespace shadelab;
+  CLI::App app{"shadelab: classic real-time rendering on Vulkan, measured"};
+  app.require_subcommand(1);
+  app.fallthrough();  // global options may follow the subcommand name
+  GlobalOptions global;
+  global.validate = SHADELAB_VALIDATION_DEFAULT;
+  app.add_flag("--validate,!--no-validate", global.validate,
+               "Enable the Vulkan validation layer; any message makes the exit code non-zero");
+  app.add_option("--device", global.device, "Use the Vulkan 1.3 device whose name contains NAME");
+
+  std::map<std::string, CommandRunner> commands = {
+      {"render", addRenderCommand(app, global)},
+      {"info", addInfoCommand(app, global)},
+  };
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    app.exit(error);
+    return 2;  // usage error
+  }
+  try {
+    return commands.at(app.get_subcommands().front()->get_name())();
+  } catch (const InputError& error) {
+    std::fprintf(stderr, "shadelab: error: %s\n", error.what());
+    return 2;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "shadelab: internal error: %s\n", error.what());
+    return 1;
+  }
+}

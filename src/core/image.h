@@ -1,0 +1,55 @@
+#pragma once
+// Images on the CPU: linear RGBA floats as rendered, and the 8-bit sRGB
+// form written to PNG. Files go through OpenImageIO.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadelab {
+
+// Linear RGBA, 4 floats per pixel, row 0 at the top.
+struct ImageRgba {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<float> pixels;
+
+  ImageRgba() = default;
+  ImageRgba(uint32_t w, uint32_t h) : width(w), height(h), pixels(size_t(w) * h * 4, 0.0f) {}
+  glm::vec4 at(uint32_t x, uint32_t y) const;
+  void set(uint32_t x, uint32_t y, glm::vec4 value);
+};
+
+// 8-bit RGBA, sRGB-encoded, row 0 at the top: what a PNG holds.
+struct ImageU8 {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> pixels;
+
+  ImageU8() = default;
+  ImageU8(uint32_t w, uint32_t h) : width(w), height(h), pixels(size_t(w) * h * 4, 0) {}
+  glm::u8vec4 at(uint32_t x, uint32_t y) const;
+  void set(uint32_t x, uint32_t y, glm::u8vec4 value);
+};
+
+// The sRGB transfer functions (IEC 61966-2-1).
+float linearToSrgb(float linear);
+float srgbToLinear(float encoded);
+// Clamps to [0, 1], encodes, rounds to nearest. Alpha is stored linearly.
+ImageU8 encodeSrgb8(const ImageRgba& image);
+ImageRgba decodeSrgb8(const ImageU8& image);
+
+// Output formats by extension: .png (8-bit sRGB) or .exr (16-bit float, linear).
+bool isSupportedOutput(const std::filesystem::path& path);
+// Throws InputError unless `path` can be written: supported extension,
+// existing parent folder. Call before rendering so bad paths fail fast.
+void checkOutputPath(const std::filesystem::path& path);
+// Writes atomically: a temporary file in the same folder, then a rename, so a
+// failure never leaves a partial file. Throws InputError on failure.
+void writeImage(const ImageRgba& image, const std::filesystem::path& path);
+void writeImage(const ImageU8& image, const std::filesystem::path& path);
+// Reads any format OpenImageIO knows into 8-bit sRGB RGBA. Throws InputError.
+ImageU8 readImageU8(const std::filesystem::path& path);
+
+}  // namespace shadelab

@@ -1,0 +1,32 @@
+#include "core/scene.h"
+
+#include "core/transform.h"
+
+namespace shadelab {
+
+glm::mat4 Camera::viewMatrix() const { return lookAt(eye, at, up); }
+
+glm::mat4 Camera::projectionMatrix(float aspect) const {
+  switch (projection) {
+    case Projection::Perspective:
+      return perspective(glm::radians(fovyDegrees), aspect, near, far);
+    case Projection::Frustum:
+      return frustum(left, right, bottom, top, near, far);
+    case Projection::Orthographic:
+      return orthographic(left, right, bottom, top, near, far);
+  }
+  return glm::mat4(1.0f);
+}
+
+uint32_t Scene::addMesh(Mesh mesh) {
+  meshes.push_back(std::move(mesh));
+  return uint32_t(meshes.size() - 1);
+}
+
+uint64_t Scene::triangleCount() const {
+  uint64_t count = 0;
+  for (const Object& object : objects) count += meshes[object.mesh].triangleCount();
+  return count;
+}
+
+}  // namespace shadelab

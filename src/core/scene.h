@@ -1,0 +1,76 @@
+#pragma once
+// The scene model of DESIGN.md: a camera, an ambient light, point and
+// directional lights, and objects (a mesh, a transform and a material).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/mesh.h"
+
+namespace shadelab {
+
+enum class Projection { Perspective, Frustum, Orthographic };
+
+struct Camera {
+  glm::vec3 eye{0.0f, 2.0f, 6.0f};
+  glm::vec3 at{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  Projection projection = Projection::Perspective;
+  float fovyDegrees = 45.0f;  // perspective
+  float near = 0.1f;
+  float far = 100.0f;
+  // Frustum: the window on the near plane; orthographic: the view volume's sides.
+  float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;
+
+  glm::mat4 viewMatrix() const;
+  // Vulkan clip space (y down, depth 0..1); `aspect` is width / height and
+  // applies to the perspective projection only.
+  glm::mat4 projectionMatrix(float aspect) const;
+};
+
+enum class LightType { Point, Directional };
+
+struct Light {
+  LightType type = LightType::Point;
+  glm::vec3 position{0.0f, 5.0f, 0.0f};    // point lights, world space
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the direction light travels
+  glm::vec3 intensity{1.0f};               // Ip per RGB channel
+  glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // f_att = 1 / (a + b d + c d^2)
+};
+
+// The Phong material: I = Ia ka + sum f_att Ip [kd (N.L) + ks (R.V)^n].
+struct Material {
+  glm::vec3 ka{0.1f};
+  glm::vec3 kd{0.7f};
+  glm::vec3 ks{0.3f};
+  float shininess = 32.0f;
+};
+
+struct Object {
+  std::string name;
+  uint32_t mesh = 0;  // index into Scene::meshes
+  glm::mat4 transform{1.0f};
+  Material material;
+};
+
+struct Scene {
+  std::string name;
+  Camera camera;
+  glm::vec3 ambient{1.0f};     // Ia
+  glm::vec3 background{0.0f};  // linear clear colour
+  std::vector<Light> lights;
+  std::vector<Mesh> meshes;
+  std::vector<Object> objects;
+
+  uint32_t addMesh(Mesh mesh);
+  uint64_t triangleCount() const;
+};
+
+// Built-in scenes need no files. Throws InputError for an unknown name,
+// listing the names that exist.
+Scene builtinScene(const std::string& name);
+std::vector<std::string> builtinSceneNames();
+
+}  // namespace shadelab

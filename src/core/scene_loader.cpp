@@ -1,0 +1,25 @@
+#include "core/scene_loader.h"
+
+#include <filesystem>
+
+#include "core/errors.h"
+
+namespace shadelab {
+
+Scene loadScene(const std::string& nameOrPath) {
+  if (nameOrPath.empty()) return builtinScene("default");
+  std::filesystem::path path(nameOrPath);
+  std::string ext = path.extension().string();
+  bool looksLikeFile = ext == ".json" || ext == ".gltf" || ext == ".glb" ||
+                       nameOrPath.find('/') != std::string::npos;
+  if (looksLikeFile) {
+    if (!std::filesystem::exists(path))
+      throw InputError("scene file '" + nameOrPath + "' does not exist");
+    throw InputError("scene file '" + nameOrPath + "': loading " +
+                     (ext.empty() ? std::string("this file type") : ext) +
+                     " scenes is not supported yet; use a built-in scene name");
+  }
+  return builtinScene(nameOrPath);
+}
+
+}  // namespace shadelab

@@ -1,0 +1,18 @@
+#include "core/stats.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab {
+
+double percentile(std::vector<double> samples, double p) {
+  if (samples.empty()) return 0.0;
+  std::sort(samples.begin(), samples.end());
+  double rank = std::clamp(p, 0.0, 100.0) / 100.0 * double(samples.size() - 1);
+  size_t below = size_t(std::floor(rank));
+  size_t above = std::min(below + 1, samples.size() - 1);
+  double t = rank - double(below);
+  return samples[below] * (1.0 - t) + samples[above] * t;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,43 @@
+#pragma once
+// Forward shading pass: draws every object of a GpuScene with the Phong
+// illumination equation under one of the shading models.
+// Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index buffers.
+// Writes: the colour and depth attachments of the rendering scope it is recorded in.
+#include <array>
+
+#include "core/context.h"
+#include "core/gpu_scene.h"
+#include "core/resources.h"
+#include "core/shading.h"
+
+namespace shadelab {
+
+struct AttachmentFormats {
+  VkFormat color = VK_FORMAT_R16G16B16A16_SFLOAT;
+  VkFormat depth = VK_FORMAT_D32_SFLOAT;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+};
+
+class ForwardPass {
+ public:
+  // Builds one pipeline per shading model up front.
+  ForwardPass(const Context& context, const AttachmentFormats& formats);
+
+  VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
+  // Records inside an active dynamic-rendering scope; sets its own viewport.
+  void record(VkCommandBuffer cmd, ShadingModel model, VkDescriptorSet frameSet,
+              const GpuScene& scene, const VkViewport& viewport) const;
+
+ private:
+  Pipeline createPipeline(const Context& context, const AttachmentFormats& formats,
+                          ShadingModel model) const;
+
+  DescriptorSetLayout setLayout_;
+  PipelineLayout layout_;
+  ShaderModule vertex_;
+  ShaderModule flatGeometry_;
+  ShaderModule fragment_;
+  std::array<Pipeline, kShadingModelCount> pipelines_;
+};
+
+}  // namespace shadelab

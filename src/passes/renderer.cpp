@@ -1,0 +1,242 @@
+#include "passes/renderer.h"
+
+#include <chrono>
+#include <cstring>
+
+#include <glm/gtc/packing.hpp>
+
+#include "core/barriers.h"
+#include "core/errors.h"
+#include "core/vk_check.h"
+
+namespace shadelab {
+namespace {
+
+double nowMs() {
+  using Clock = std::chrono::steady_clock;
+  return std::chrono::duration<double, std::milli>(Clock::now().time_since_epoch()).count();
+}
+
+ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
+  ImageRgba image(width, height);
+  const auto* texels = static_cast<const uint64_t*>(data);
+  for (size_t p = 0; p < size_t(width) * height; ++p) {
+    glm::vec4 value = glm::unpackHalf4x16(texels[p]);
+    std::memcpy(&image.pixels[p * 4], &value, sizeof(value));
+  }
+  return image;
+}
+
+}  // namespace
+
+Renderer::Renderer(const Context& context)
+    : context_(context), forward_(context, {kColorFormat, kDepthFormat, VK_SAMPLE_COUNT_1_BIT}) {
+  VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
+                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight}};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = kFramesInFlight;
+  poolInfo.poolSizeCount = 2;
+  poolInfo.pPoolSizes = sizes;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorPool(context.device(), &poolInfo, nullptr, &pool));
+  descriptorPool_ = DescriptorPool(context.device(), pool);
+  for (Frame& frame : frames_) createFrame(frame);
+}
+
+Renderer::~Renderer() { vkDeviceWaitIdle(context_.device()); }
+
+void Renderer::createFrame(Frame& frame) {
+  VkDevice device = context_.device();
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  poolInfo.queueFamilyIndex = context_.queueFamily();
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+  frame.pool = CommandPool(device, pool);
+  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocInfo.commandPool = pool;
+  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocInfo.commandBufferCount = 1;
+  VK_CHECK(vkAllocateCommandBuffers(device, &allocInfo, &frame.cmd));
+
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
+  frame.fence = Fence(device, fence);
+
+  VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  queryInfo.queryCount = 2;
+  VkQueryPool queries = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateQueryPool(device, &queryInfo, nullptr, &queries));
+  frame.timestamps = QueryPool(device, queries);
+
+  frame.frameData = Buffer(context_, sizeof(gpu::FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                           MemoryUse::HostVisible);
+  VkDescriptorSetLayout layout = forward_.descriptorSetLayout();
+  VkDescriptorSetAllocateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  setInfo.descriptorPool = descriptorPool_;
+  setInfo.descriptorSetCount = 1;
+  setInfo.pSetLayouts = &layout;
+  VK_CHECK(vkAllocateDescriptorSets(device, &setInfo, &frame.set));
+  // Both bindings are written now: lavapipe crashes on never-written descriptors.
+  ensureObjectCapacity(frame, 64);
+}
+
+void Renderer::ensureObjectCapacity(Frame& frame, uint32_t count) {
+  if (count <= frame.objectCapacity) return;
+  frame.objectCapacity = std::max(count, frame.objectCapacity * 2);
+  frame.objectData =
+      Buffer(context_, VkDeviceSize(frame.objectCapacity) * sizeof(gpu::ObjectData),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostVisible);
+  VkDescriptorBufferInfo frameInfo{frame.frameData.get(), 0, VK_WHOLE_SIZE};
+  VkDescriptorBufferInfo objectInfo{frame.objectData.get(), 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet writes[2] = {{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},
+                                    {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+  writes[0].dstSet = frame.set;
+  writes[0].dstBinding = BINDING_FRAME;
+  writes[0].descriptorCount = 1;
+  writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  writes[0].pBufferInfo = &frameInfo;
+  writes[1] = writes[0];
+  writes[1].dstBinding = BINDING_OBJECTS;
+  writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  writes[1].pBufferInfo = &objectInfo;
+  vkUpdateDescriptorSets(context_.device(), 2, writes, 0, nullptr);
+}
+
+void Renderer::ensureTarget(uint32_t width, uint32_t height) {
+  if (target_.color && target_.color.desc().width == width &&
+      target_.color.desc().height == height)
+    return;
+  ImageDesc color{kColorFormat, width, height};
+  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  ImageDesc depth{kDepthFormat, width, height};
+  depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+  target_ = Target{Image(context_, color), Image(context_, depth)};
+}
+
+void Renderer::retire(Frame& frame, RenderStats& stats, double& lastCompletion) {
+  if (!frame.pending) return;
+  VkFence fence = frame.fence;
+  VK_CHECK(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+  double completion = nowMs();
+  uint64_t ticks[2] = {};
+  VK_CHECK(vkGetQueryPoolResults(context_.device(), frame.timestamps, 0, 2, sizeof(ticks), ticks,
+                                 sizeof(uint64_t),
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  double period = context_.properties().limits.timestampPeriod;  // ns per tick
+  stats.deviceMs.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
+  stats.wallMs.push_back(completion - lastCompletion);
+  lastCompletion = completion;
+  frame.pending = false;
+}
+
+void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
+                           const RenderSettings& settings, const Buffer* readback) {
+  VkDevice device = context_.device();
+  uint32_t width = settings.width, height = settings.height;
+  glm::mat4 view = source.camera.viewMatrix();
+  glm::mat4 projection = source.camera.projectionMatrix(float(width) / float(height));
+  gpu::FrameData frameData = makeFrameData(source, view, projection);
+  std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
+  std::vector<gpu::ObjectData> objects = makeObjectData(source, view);
+  std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
+
+  VK_CHECK(vkResetCommandPool(device, frame.pool, 0));
+  VkCommandBuffer cmd = frame.cmd;
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  vkCmdResetQueryPool(cmd, frame.timestamps, 0, 2);
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, frame.timestamps, 0);
+
+  imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, target_.colorUse,
+               ImageUse::ColorAttachment);
+  imageBarrier(cmd, target_.depth.get(), VK_IMAGE_ASPECT_DEPTH_BIT, target_.depthUse,
+               ImageUse::DepthAttachment);
+  target_.colorUse = ImageUse::ColorAttachment;
+  target_.depthUse = ImageUse::DepthAttachment;
+
+  VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  color.imageView = target_.color.view();
+  color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  color.clearValue.color = {{source.background.r, source.background.g, source.background.b, 1.0f}};
+  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depth.imageView = target_.depth.view();
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  depth.clearValue.depthStencil = {1.0f, 0};
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, {width, height}};
+  rendering.layerCount = 1;
+  rendering.colorAttachmentCount = 1;
+  rendering.pColorAttachments = &color;
+  rendering.pDepthAttachment = &depth;
+  vkCmdBeginRendering(cmd, &rendering);
+  VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+  forward_.record(cmd, settings.shadingModel, frame.set, scene, viewport);
+  vkCmdEndRendering(cmd);
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
+
+  if (readback) {
+    imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::ColorAttachment,
+                 ImageUse::TransferSource);
+    target_.colorUse = ImageUse::TransferSource;
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {width, height, 1};
+    vkCmdCopyImageToBuffer(cmd, target_.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           readback->get(), 1, &region);
+    transferToHostBarrier(cmd);
+  }
+  VK_CHECK(vkEndCommandBuffer(cmd));
+
+  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmdInfo.commandBuffer = cmd;
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmdInfo;
+  VkFence fence = frame.fence;
+  VK_CHECK(vkResetFences(device, 1, &fence));
+  VK_CHECK(vkQueueSubmit2(context_.queue(), 1, &submit, fence));
+  frame.pending = true;
+}
+
+RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& settings) {
+  uint32_t maxSize = context_.properties().limits.maxImageDimension2D;
+  if (settings.width == 0 || settings.height == 0 || settings.width > maxSize ||
+      settings.height > maxSize)
+    throw InputError("size " + std::to_string(settings.width) + "x" +
+                     std::to_string(settings.height) + ": width and height must be 1.." +
+                     std::to_string(maxSize));
+  if (settings.frames == 0) throw InputError("frames: expected at least 1");
+
+  GpuScene gpuScene = uploadScene(context_, scene);
+  ensureTarget(settings.width, settings.height);
+  Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
+                  VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
+
+  RenderResult result;
+  result.stats.triangles = gpuScene.triangles;
+  result.stats.drawCalls = uint32_t(gpuScene.draws.size());
+  double lastCompletion = nowMs();
+  for (uint32_t i = 0; i < settings.frames; ++i) {
+    Frame& frame = frames_[i % kFramesInFlight];
+    retire(frame, result.stats, lastCompletion);
+    ensureObjectCapacity(frame, uint32_t(scene.objects.size()));
+    bool last = i + 1 == settings.frames;
+    recordFrame(frame, gpuScene, scene, settings, last ? &readback : nullptr);
+  }
+  // Retire in submission order so the per-frame timings stay in order.
+  for (uint32_t i = 0; i < kFramesInFlight; ++i)
+    retire(frames_[(settings.frames + i) % kFramesInFlight], result.stats, lastCompletion);
+  result.image = unpackHalfPixels(readback.mapped(), settings.width, settings.height);
+  return result;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,87 @@
+#pragma once
+// The renderer every front end shares (CLI, tests, benchmark, viewer): it
+// owns the frames in flight and the render target and runs the passes.
+// Headless capture is one call: renderToImage(scene, settings).
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "core/barriers.h"
+#include "core/context.h"
+#include "core/gpu_scene.h"
+#include "core/image.h"
+#include "core/resources.h"
+#include "core/scene.h"
+#include "core/shading.h"
+#include "passes/forward_pass.h"
+
+namespace shadelab {
+
+struct RenderSettings {
+  uint32_t width = 1280;
+  uint32_t height = 720;
+  ShadingModel shadingModel = ShadingModel::Phong;
+  uint32_t frames = 1;  // frames drawn back to back; the last one is read back
+};
+
+struct RenderStats {
+  std::vector<double> deviceMs;  // per frame, from GPU timestamps around the frame's commands
+  std::vector<double> wallMs;    // per frame, interval between successive frame completions
+  uint64_t triangles = 0;        // submitted per frame
+  uint32_t drawCalls = 0;
+};
+
+struct RenderResult {
+  ImageRgba image;  // linear RGBA
+  RenderStats stats;
+};
+
+class Renderer {
+ public:
+  static constexpr uint32_t kFramesInFlight = 2;
+  static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // linear, HDR
+  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+  explicit Renderer(const Context& context);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Throws InputError for an impossible size.
+  RenderResult renderToImage(const Scene& scene, const RenderSettings& settings);
+
+ private:
+  struct Frame {
+    CommandPool pool;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    Fence fence;
+    QueryPool timestamps;
+    Buffer frameData;    // FrameData, host-visible
+    Buffer objectData;   // ObjectData[], host-visible
+    uint32_t objectCapacity = 0;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    bool pending = false;  // submitted, fence not yet waited on
+  };
+  struct Target {
+    Image color;
+    Image depth;
+    ImageUse colorUse = ImageUse::Undefined;
+    ImageUse depthUse = ImageUse::Undefined;
+  };
+
+  void createFrame(Frame& frame);
+  void ensureObjectCapacity(Frame& frame, uint32_t count);
+  void ensureTarget(uint32_t width, uint32_t height);
+  // Waits for the frame's previous submission and records its timings.
+  void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
+  void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
+                   const RenderSettings& settings, const Buffer* readback);
+
+  const Context& context_;
+  ForwardPass forward_;
+  DescriptorPool descriptorPool_;
+  std::array<Frame, kFramesInFlight> frames_;
+  Target target_;
+};
+
+}  // namespace shadelab
