@@ -1,0 +1,185 @@
+// Image tests: built-in scenes rendered headless on the device and compared
+// with committed goldens; must-fail twins proving the comparison catches a
+// wrong image; determinism; projections, culling and depth testing measured
+// on the readback.
+#include <cmath>
+#include <cstring>
+
+#include "core/errors.h"
+#include "core/scene.h"
+#include "core/transform.h"
+#include "gpu_test_support.h"
+
+namespace shadelab::test {
+namespace {
+
+constexpr uint32_t kWidth = 320;
+constexpr uint32_t kHeight = 180;
+
+RenderSettings small(ShadingModel model = ShadingModel::Phong) {
+  return {kWidth, kHeight, model, 1};
+}
+
+class ShadingGolden : public GpuTest, public ::testing::WithParamInterface<ShadingModel> {};
+
+TEST_P(ShadingGolden, DefaultSceneMatchesGolden) {
+  ShadingModel model = GetParam();
+  ImageU8 image = render(builtinScene("default"), small(model));
+  EXPECT_TRUE(matchesGolden("default-" + std::string(shadingModelName(model)), image));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllModels, ShadingGolden,
+                         ::testing::Values(ShadingModel::Flat, ShadingModel::Gouraud,
+                                           ShadingModel::Phong, ShadingModel::BlinnPhong,
+                                           ShadingModel::Unlit),
+                         [](const auto& info) {
+                           std::string name(shadingModelName(info.param));
+                           std::erase(name, '-');
+                           return name;
+                         });
+
+using RenderImages = GpuTest;
+
+// Must-fail twins: each wrong image must be rejected by the golden tolerance.
+TEST_F(RenderImages, ComparisonRejectsMovedLight) {
+  Scene scene = builtinScene("default");
+  scene.lights[0].position += glm::vec3(0.5f, 0.0f, 0.0f);
+  EXPECT_FALSE(matchesImage(loadGolden("default-phong"), render(scene, small())));
+}
+
+TEST_F(RenderImages, ComparisonRejectsCameraTurnedOneDegree) {
+  Scene scene = builtinScene("default");
+  glm::vec4 eye = rotationY(glm::radians(1.0f)) * glm::vec4(scene.camera.eye, 1.0f);
+  scene.camera.eye = glm::vec3(eye);
+  EXPECT_FALSE(matchesImage(loadGolden("default-phong"), render(scene, small())));
+}
+
+TEST_F(RenderImages, ComparisonRejectsOnePercentOfPixelsWrong) {
+  ImageU8 image = loadGolden("default-phong");
+  // A 24x24 patch is 1% of the image: twice the 0.5% the tolerance allows.
+  for (uint32_t y = 80; y < 104; ++y)
+    for (uint32_t x = 150; x < 174; ++x) image.set(x, y, {255, 0, 255, 255});
+  EXPECT_FALSE(matchesImage(loadGolden("default-phong"), image));
+}
+
+TEST_F(RenderImages, OrthographicCameraMatchesGolden) {
+  Scene scene = builtinScene("default");
+  scene.camera.projection = Projection::Orthographic;
+  float halfHeight = 2.6f;
+  float halfWidth = halfHeight * float(kWidth) / float(kHeight);
+  scene.camera.left = -halfWidth, scene.camera.right = halfWidth;
+  scene.camera.bottom = -halfHeight, scene.camera.top = halfHeight;
+  scene.camera.near = 1.0f, scene.camera.far = 30.0f;
+  EXPECT_TRUE(matchesGolden("default-orthographic", render(scene, small())));
+}
+
+// A symmetric frustum with top = n tan(fovy/2) is the perspective projection.
+TEST_F(RenderImages, SymmetricFrustumEqualsPerspective) {
+  Scene perspective = builtinScene("default");
+  Scene frustum = perspective;
+  Camera& camera = frustum.camera;
+  camera.projection = Projection::Frustum;
+  camera.top = camera.near * std::tan(glm::radians(camera.fovyDegrees) / 2.0f);
+  camera.bottom = -camera.top;
+  camera.right = camera.top * float(kWidth) / float(kHeight);
+  camera.left = -camera.right;
+  EXPECT_TRUE(matchesImage(render(perspective, small()), render(frustum, small())));
+  // An off-centre frustum shifts the image: it must not match.
+  camera.left += 0.01f, camera.right += 0.01f;
+  EXPECT_FALSE(matchesImage(render(perspective, small()), render(frustum, small())));
+}
+
+TEST_F(RenderImages, RendersAreBitIdentical) {
+  Scene scene = builtinScene("default");
+  RenderResult first = renderer().renderToImage(scene, small());
+  RenderResult second = renderer().renderToImage(scene, small());
+  Renderer fresh(context());
+  RenderResult third = fresh.renderToImage(scene, small());
+  ASSERT_EQ(first.image.pixels.size(), second.image.pixels.size());
+  EXPECT_EQ(0, std::memcmp(first.image.pixels.data(), second.image.pixels.data(),
+                           first.image.pixels.size() * sizeof(float)));
+  EXPECT_EQ(0, std::memcmp(first.image.pixels.data(), third.image.pixels.data(),
+                           first.image.pixels.size() * sizeof(float)));
+}
+
+uint64_t pixelsUnlike(const ImageU8& image, glm::u8vec4 background) {
+  uint64_t count = 0;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) count += image.at(x, y) != background;
+  return count;
+}
+
+Scene singleSphere(glm::vec3 eye) {
+  Scene scene;
+  scene.name = "sphere";
+  scene.background = {0.0f, 0.0f, 1.0f};
+  scene.camera.eye = eye;
+  scene.camera.at = {0.0f, 0.0f, 0.0f};
+  if (glm::length(eye) < 1e-6f) scene.camera.at = {0.0f, 0.0f, -1.0f};
+  scene.lights.push_back({});
+  scene.objects.push_back({"sphere", scene.addMesh(makeUvSphere(1.0f, 32, 16)), glm::mat4(1.0f),
+                           Material{}});
+  return scene;
+}
+
+// Counter-clockwise front faces with back-face culling: from inside a closed
+// sphere every triangle faces away, so nothing is drawn.
+TEST_F(RenderImages, BackFacesAreCulled) {
+  glm::u8vec4 blue{0, 0, 255, 255};
+  EXPECT_EQ(pixelsUnlike(render(singleSphere(glm::vec3(0.0f)), small()), blue), 0u);
+  EXPECT_GT(pixelsUnlike(render(singleSphere({0.0f, 0.0f, 4.0f}), small()), blue),
+            uint64_t(kWidth * kHeight / 10));
+}
+
+// The z-buffer makes the image independent of drawing order.
+TEST_F(RenderImages, DepthTestMakesDrawOrderIrrelevant) {
+  Scene forward = builtinScene("default");
+  Scene reversed = forward;
+  std::reverse(reversed.objects.begin(), reversed.objects.end());
+  ImageU8 a = render(forward, small());
+  ImageU8 b = render(reversed, small());
+  EXPECT_EQ(compareImages(a, b).maxDifference, 0);
+}
+
+TEST_F(RenderImages, FrameStatisticsCoverEveryFrame) {
+  Scene scene = builtinScene("default");
+  RenderResult result = renderer().renderToImage(scene, {64, 64, ShadingModel::Phong, 7});
+  ASSERT_EQ(result.stats.deviceMs.size(), 7u);
+  ASSERT_EQ(result.stats.wallMs.size(), 7u);
+  for (double ms : result.stats.deviceMs) EXPECT_GT(ms, 0.0);
+  EXPECT_EQ(result.stats.triangles, scene.triangleCount());
+  EXPECT_EQ(result.stats.drawCalls, scene.objects.size());
+}
+
+TEST_F(RenderImages, ImpossibleSizesAreInputErrors) {
+  Scene scene = builtinScene("default");
+  EXPECT_THROW(renderer().renderToImage(scene, {0, 10, ShadingModel::Phong, 1}), InputError);
+  EXPECT_THROW(renderer().renderToImage(scene, {100000, 10, ShadingModel::Phong, 1}), InputError);
+  RenderResult tiny = renderer().renderToImage(scene, {1, 1, ShadingModel::Phong, 1});
+  EXPECT_EQ(tiny.image.width, 1u);
+}
+
+}  // namespace
+}  // namespace shadelab::test
+
+namespace shadelab::test {
+namespace {
+
+// The guard every GPU test relies on must itself be able to fail: a
+// deliberately invalid call has to be counted.
+TEST(ValidationLayer, CountsAnInvalidCall) {
+  Context& context = sharedContext();
+  context.resetValidationReport();
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.anisotropyEnable = VK_TRUE;
+  info.maxAnisotropy = 1000.0f;  // above maxSamplerAnisotropy: VUID-VkSamplerCreateInfo-anisotropyEnable-01071
+  info.maxLod = 1.0f;
+  VkSampler sampler = VK_NULL_HANDLE;
+  vkCreateSampler(context.device(), &info, nullptr, &sampler);
+  if (sampler) vkDestroySampler(context.device(), sampler, nullptr);
+  EXPECT_GE(context.validationReport().errors, 1u);
+  context.resetValidationReport();
+}
+
+}  // namespace
+}  // namespace shadelab::test
