@@ -13,16 +13,15 @@ layout(location = 3) flat in vec3 inFlatColor;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  ObjectData object = objects[draw.objectIndex];
   vec3 color;
   if (shadingModel == SHADING_FLAT) {
     color = inFlatColor;
   } else if (shadingModel == SHADING_GOURAUD) {
     color = inColor;
   } else if (shadingModel == SHADING_UNLIT) {
-    color = object.kd.rgb;
+    color = draw.kd.rgb;
   } else {
-    color = illuminate(inPosition, inNormal, objectMaterial(object),
+    color = illuminate(inPosition, inNormal, drawMaterial(),
                        shadingModel == SHADING_BLINN_PHONG);
   }
   outColor = vec4(color, 1.0);

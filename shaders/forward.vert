@@ -16,13 +16,13 @@ layout(location = 2) out vec3 outColor;     // Gouraud: lit vertex colour
 layout(location = 3) flat out vec3 outFlatColor;
 
 void main() {
-  ObjectData object = objects[draw.objectIndex];
+  ObjectData object = objects[draw.object.x];
   vec4 eye = object.modelView * vec4(inPosition, 1.0);
   outPosition = eye.xyz;
   // Normals transform by the inverse transpose of the model-view matrix.
   outNormal = mat3(object.normalMatrix) * inNormal;
   outColor = shadingModel == SHADING_GOURAUD
-                 ? illuminate(eye.xyz, outNormal, objectMaterial(object), false)
+                 ? illuminate(eye.xyz, outNormal, drawMaterial(), false)
                  : vec3(0.0);
   outFlatColor = vec3(0.0);
   gl_Position = frame.projection * eye;

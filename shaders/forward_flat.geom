@@ -24,7 +24,7 @@ void main() {
   // Counter-clockwise winding seen from the front gives the outward normal.
   vec3 faceNormal = cross(p1 - p0, p2 - p0);
   vec3 center = (p0 + p1 + p2) / 3.0;
-  vec3 color = illuminate(center, faceNormal, objectMaterial(objects[draw.objectIndex]), false);
+  vec3 color = illuminate(center, faceNormal, drawMaterial(), false);
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
     outPosition = inPosition[i];

@@ -15,8 +15,8 @@ struct SurfaceMaterial {
   float shininess;
 };
 
-SurfaceMaterial objectMaterial(ObjectData object) {
-  return SurfaceMaterial(object.ka.rgb, object.kd.rgb, object.ks.rgb, object.ks.w);
+SurfaceMaterial drawMaterial() {
+  return SurfaceMaterial(draw.ka.rgb, draw.kd.rgb, draw.ks.rgb, draw.ks.w);
 }
 
 // pow(0, 0) is undefined in GLSL; shininess 0 means "specular everywhere it is lit".
@@ -32,7 +32,7 @@ vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn
   N = validNormal ? N / lengthN : vec3(0.0);
   vec3 V = normalize(-position);
   vec3 color = frame.ambient.rgb * material.ka;
-  for (int i = 0; i < frame.lightCount.x; ++i) {
+  for (int i = 0; i < lightCount; ++i) {
     GpuLight light = frame.lights[i];
     vec3 L;
     float attenuation = 1.0;

@@ -16,9 +16,10 @@ static_assert(offsetof(gpu::FrameData, lightCount) == 80);
 static_assert(offsetof(gpu::FrameData, lights) == 96);
 static_assert(sizeof(gpu::FrameData) == 96 + 64 * MAX_LIGHTS);
 static_assert(offsetof(gpu::ObjectData, normalMatrix) == 64);
-static_assert(offsetof(gpu::ObjectData, ka) == 128);
-static_assert(offsetof(gpu::ObjectData, ks) == 160);
-static_assert(sizeof(gpu::ObjectData) == 176);
+static_assert(sizeof(gpu::ObjectData) == 128);
+static_assert(offsetof(gpu::DrawConstants, kd) == 16);
+static_assert(offsetof(gpu::DrawConstants, object) == 48);
+static_assert(sizeof(gpu::DrawConstants) == 64);  // within the 128 bytes Vulkan guarantees
 
 GpuScene uploadScene(const Context& context, const Scene& scene) {
   std::vector<Vertex> vertices;
@@ -26,18 +27,23 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
   std::vector<DrawItem> meshRanges;
   for (const Mesh& mesh : scene.meshes) {
     meshRanges.push_back({uint32_t(indices.size()), uint32_t(mesh.indices.size()),
-                          int32_t(vertices.size()), 0});
+                          int32_t(vertices.size()), {}});
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
     indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
   }
   GpuScene gpuScene;
+  gpuScene.lightCount = uint32_t(std::min<size_t>(scene.lights.size(), MAX_LIGHTS));
   gpuScene.vertices = uploadBuffer(context, std::as_bytes(std::span(vertices)),
                                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   gpuScene.indices = uploadBuffer(context, std::as_bytes(std::span(indices)),
                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
-    DrawItem draw = meshRanges[scene.objects[i].mesh];
-    draw.objectIndex = i;
+    const Object& object = scene.objects[i];
+    DrawItem draw = meshRanges[object.mesh];
+    draw.constants.ka = glm::vec4(object.material.ka, 0.0f);
+    draw.constants.kd = glm::vec4(object.material.kd, 0.0f);
+    draw.constants.ks = glm::vec4(object.material.ks, object.material.shininess);
+    draw.constants.object = glm::ivec4(int(i), 0, 0, 0);
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
   }
@@ -75,9 +81,6 @@ std::vector<gpu::ObjectData> makeObjectData(const Scene& scene, const glm::mat4&
     gpu::ObjectData data{};
     data.modelView = view * object.transform;
     data.normalMatrix = glm::mat4(normalMatrix(data.modelView));
-    data.ka = glm::vec4(object.material.ka, 0.0f);
-    data.kd = glm::vec4(object.material.kd, 0.0f);
-    data.ks = glm::vec4(object.material.ks, object.material.shininess);
     objects.push_back(data);
   }
   return objects;

@@ -14,7 +14,7 @@ struct DrawItem {
   uint32_t firstIndex = 0;
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
-  uint32_t objectIndex = 0;
+  gpu::DrawConstants constants{};  // material and object index, pushed per draw
 };
 
 struct GpuScene {
@@ -22,6 +22,7 @@ struct GpuScene {
   Buffer indices;
   std::vector<DrawItem> draws;
   uint64_t triangles = 0;
+  uint32_t lightCount = 0;  // lights the shaders loop over (at most MAX_LIGHTS)
 };
 
 GpuScene uploadScene(const Context& context, const Scene& scene);
@@ -29,6 +30,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene);
 // Lights move to eye space, so the shaders light with V = -position.
 gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view, const glm::mat4& projection);
 // Model-view and its normal matrix (inverse transpose) per object.
+// Materials travel with the draws (DrawItem::constants).
 std::vector<gpu::ObjectData> makeObjectData(const Scene& scene, const glm::mat4& view);
 
 }  // namespace shadelab

@@ -1,5 +1,6 @@
 #include "passes/forward_pass.h"
 
+#include <cassert>
 #include <cstddef>
 #include <vector>
 
@@ -9,7 +10,8 @@
 
 namespace shadelab {
 
-ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& formats) {
+ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& formats)
+    : context_(context), formats_(formats) {
   VkDevice device = context.device();
   VkDescriptorSetLayoutBinding bindings[] = {
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
@@ -26,7 +28,7 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
 
   VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                                     VK_SHADER_STAGE_FRAGMENT_BIT,
-                                0, sizeof(uint32_t)};
+                                0, sizeof(gpu::DrawConstants)};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
   layoutInfo.pSetLayouts = &setLayout;
@@ -39,15 +41,26 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   vertex_ = loadShader(device, "forward.vert");
   flatGeometry_ = loadShader(device, "forward_flat.geom");
   fragment_ = loadShader(device, "forward.frag");
-  for (int model = 0; model < kShadingModelCount; ++model)
-    pipelines_[model] = createPipeline(context, formats, ShadingModel(model));
 }
 
-Pipeline ForwardPass::createPipeline(const Context& context, const AttachmentFormats& formats,
-                                     ShadingModel model) const {
-  int32_t shadingModel = int32_t(model);
-  VkSpecializationMapEntry entry{/* constantID= */ SPEC_SHADING_MODEL, 0, sizeof(int32_t)};
-  VkSpecializationInfo specialization{1, &entry, sizeof(shadingModel), &shadingModel};
+void ForwardPass::prepare(uint32_t lightCount) {
+  for (int model = 0; model < kShadingModelCount; ++model) {
+    VariantKey key{ShadingModel(model), lightCount};
+    if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key.first, lightCount);
+  }
+}
+
+Pipeline ForwardPass::createPipeline(ShadingModel model, uint32_t lightCount) const {
+  const AttachmentFormats& formats = formats_;
+  struct {
+    int32_t shadingModel;
+    int32_t lightCount;
+  } constants{int32_t(model), int32_t(lightCount)};
+  VkSpecializationMapEntry entries[] = {
+      {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
+      {/* constantID= */ SPEC_LIGHT_COUNT, offsetof(decltype(constants), lightCount), 4},
+  };
+  VkSpecializationInfo specialization{2, entries, sizeof(constants), &constants};
 
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   auto addStage = [&](VkShaderStageFlagBits stage, VkShaderModule module) {
@@ -128,9 +141,9 @@ Pipeline ForwardPass::createPipeline(const Context& context, const AttachmentFor
   info.pDynamicState = &dynamic;
   info.layout = layout_;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr,
+  VK_CHECK(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr,
                                      &pipeline));
-  return Pipeline(context.device(), pipeline);
+  return Pipeline(context_.device(), pipeline);
 }
 
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, VkDescriptorSet frameSet,
@@ -139,7 +152,9 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, VkDescriptorSe
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_[int(model)]);
+  auto pipeline = pipelines_.find({model, scene.lightCount});
+  assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for this light count");
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
                           nullptr);
   VkDeviceSize offset = 0;
@@ -150,7 +165,7 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, VkDescriptorSe
     vkCmdPushConstants(cmd, layout_,
                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                            VK_SHADER_STAGE_FRAGMENT_BIT,
-                       0, sizeof(uint32_t), &draw.objectIndex);
+                       0, sizeof(draw.constants), &draw.constants);
     vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
   }
 }

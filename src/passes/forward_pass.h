@@ -3,7 +3,8 @@
 // illumination equation under one of the shading models.
 // Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index buffers.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
-#include <array>
+#include <map>
+#include <utility>
 
 #include "core/context.h"
 #include "core/gpu_scene.h"
@@ -20,24 +21,28 @@ struct AttachmentFormats {
 
 class ForwardPass {
  public:
-  // Builds one pipeline per shading model up front.
   ForwardPass(const Context& context, const AttachmentFormats& formats);
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
+  // Builds the pipelines of every shading model for a scene's light count
+  // (a specialization constant), before any frame records with them.
+  void prepare(uint32_t lightCount);
   // Records inside an active dynamic-rendering scope; sets its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, VkDescriptorSet frameSet,
               const GpuScene& scene, const VkViewport& viewport) const;
 
  private:
-  Pipeline createPipeline(const Context& context, const AttachmentFormats& formats,
-                          ShadingModel model) const;
+  using VariantKey = std::pair<ShadingModel, uint32_t>;  // model, light count
+  Pipeline createPipeline(ShadingModel model, uint32_t lightCount) const;
 
+  const Context& context_;
+  AttachmentFormats formats_;
   DescriptorSetLayout setLayout_;
   PipelineLayout layout_;
   ShaderModule vertex_;
   ShaderModule flatGeometry_;
   ShaderModule fragment_;
-  std::array<Pipeline, kShadingModelCount> pipelines_;
+  std::map<VariantKey, Pipeline> pipelines_;
 };
 
 }  // namespace shadelab

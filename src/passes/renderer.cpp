@@ -217,6 +217,7 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
 
   GpuScene gpuScene = uploadScene(context_, scene);
+  forward_.prepare(gpuScene.lightCount);
   ensureTarget(settings.width, settings.height);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
