@@ -11,4 +11,5 @@ mkdir -p out
 for mode in flat gouraud phong blinn-phong; do
   "$bin" render --mode "$mode" --size 1280x720 -o "out/default-$mode.png"
 done
+"$bin" compare -o out/compare.png
 echo "demo: images written to out/"

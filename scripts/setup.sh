@@ -14,7 +14,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev openimageio-tools
   libimgui-dev libcli11-dev nlohmann-json3-dev libstb-dev libmeshoptimizer-dev
   libgtest-dev libbenchmark-dev
-  xvfb xauth imagemagick python3-matplotlib
+  fonts-dejavu-core xvfb xauth imagemagick python3-matplotlib
 )
 
 missing=()

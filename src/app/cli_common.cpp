@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdio>
 #include <regex>
+#include <sstream>
 
 #include "core/errors.h"
 
@@ -19,6 +20,22 @@ Size parseSize(const std::string& text, const std::string& option) {
   if (size.width == 0 || size.height == 0)
     throw InputError(option + " '" + text + "': width and height must be at least 1");
   return size;
+}
+
+ShadingModel parseShadingModelOption(const std::string& text, const std::string& option) {
+  if (std::optional<ShadingModel> model = parseShadingModel(text)) return *model;
+  std::string names;
+  for (const std::string& name : shadingModelNames()) names += (names.empty() ? "" : ", ") + name;
+  throw InputError(option + " '" + text + "': expected one of " + names);
+}
+
+std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option) {
+  std::vector<ShadingModel> models;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) models.push_back(parseShadingModelOption(item, option));
+  if (models.empty()) throw InputError(option + " '" + text + "': expected at least one model");
+  return models;
 }
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global) {

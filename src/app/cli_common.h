@@ -3,9 +3,11 @@
 // as InputError, and the Vulkan context every command opens the same way.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "core/context.h"
+#include "core/shading.h"
 
 namespace shadelab {
 
@@ -15,6 +17,10 @@ struct Size {
 };
 // "1280x720" -> {1280, 720}; throws InputError naming the option and value.
 Size parseSize(const std::string& text, const std::string& option);
+
+// "flat,phong" -> models, in order; throws InputError naming a bad entry.
+std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option);
+ShadingModel parseShadingModelOption(const std::string& text, const std::string& option);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.

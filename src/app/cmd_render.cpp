@@ -36,9 +36,7 @@ void printTimings(const RenderStats& stats) {
 
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
-  std::optional<ShadingModel> model = parseShadingModel(options.mode);
-  if (!model) throw InputError("--mode '" + options.mode + "': expected one of flat, gouraud, "
-                               "phong, blinn-phong, unlit");
+  ShadingModel model = parseShadingModelOption(options.mode, "--mode");
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
 
@@ -46,7 +44,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   RenderResult result;
   {
     Renderer renderer(*context);
-    result = renderer.renderToImage(scene, {size.width, size.height, *model, options.frames});
+    result = renderer.renderToImage(scene, {size.width, size.height, model, options.frames});
   }
   writeImage(result.image, options.output);
   std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws)\n",

@@ -16,6 +16,7 @@ struct GlobalOptions {
 using CommandRunner = std::function<int()>;
 
 CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global);
+CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addInfoCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace shadelab

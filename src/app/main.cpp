@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
 
   std::map<std::string, CommandRunner> commands = {
       {"render", addRenderCommand(app, global)},
+      {"compare", addCompareCommand(app, global)},
       {"info", addInfoCommand(app, global)},
   };
   try {

@@ -12,6 +12,32 @@ Material material(glm::vec3 color, glm::vec3 specular, float shininess) {
   return {0.15f * color, color, specular, shininess};
 }
 
+ShapeDesc plane(float size, uint32_t quadsPerSide) {
+  return {ShapeKind::Plane, size, {}, 1.0f, 1.0f, 0.25f, quadsPerSide};
+}
+ShapeDesc uvSphere(float radius, uint32_t slices) {
+  return {ShapeKind::UvSphere, 1.0f, {}, radius, 1.0f, 0.25f, slices};
+}
+ShapeDesc icosphere(float radius, uint32_t level) {
+  return {ShapeKind::Icosphere, 1.0f, {}, radius, 1.0f, 0.25f, level};
+}
+ShapeDesc torus(float major, float minor, uint32_t segments) {
+  return {ShapeKind::Torus, 1.0f, {}, 1.0f, major, minor, segments};
+}
+ShapeDesc box(glm::vec3 halfExtents) {
+  return {ShapeKind::Box, 1.0f, halfExtents, 1.0f, 1.0f, 0.25f, 1};
+}
+ShapeDesc teapot(uint32_t level) {
+  return {ShapeKind::Teapot, 1.0f, {}, 1.0f, 1.0f, 0.25f, level};
+}
+
+Light pointLight(glm::vec3 position, glm::vec3 intensity, glm::vec3 attenuation) {
+  return {LightType::Point, position, {}, intensity, attenuation};
+}
+Light directionalLight(glm::vec3 direction, glm::vec3 intensity) {
+  return {LightType::Directional, {}, direction, intensity, {1.0f, 0.0f, 0.0f}};
+}
+
 // The default scene: one of each procedural shape on a floor under a point
 // light and a directional light, so depth testing, perspective and the
 // illumination equation are all visible in one image.
@@ -23,25 +49,23 @@ Scene defaultScene() {
   scene.camera.fovyDegrees = 40.0f;
   scene.ambient = glm::vec3(0.6f);
   scene.background = {0.02f, 0.025f, 0.035f};
-  scene.lights.push_back({LightType::Point, {3.0f, 5.0f, 4.0f}, {}, glm::vec3(1.0f),
-                          {1.0f, 0.0f, 0.01f}});
-  scene.lights.push_back({LightType::Directional, {}, {1.0f, -1.0f, -0.6f},
-                          glm::vec3(0.25f, 0.25f, 0.3f), {1.0f, 0.0f, 0.0f}});
+  scene.lights.push_back(pointLight({3.0f, 5.0f, 4.0f}, glm::vec3(1.0f), {1.0f, 0.0f, 0.01f}));
+  scene.lights.push_back(directionalLight({1.0f, -1.0f, -0.6f}, {0.25f, 0.25f, 0.3f}));
 
-  uint32_t floor = scene.addMesh(makePlane(12.0f, 8));
-  uint32_t sphere = scene.addMesh(makeUvSphere(0.8f, 48, 24));
-  uint32_t torus = scene.addMesh(makeTorus(0.6f, 0.22f, 48, 24));
-  uint32_t box = scene.addMesh(makeBox(glm::vec3(0.6f)));
-  uint32_t ico = scene.addMesh(makeIcosphere(0.7f, 2));
+  uint32_t floor = scene.addShape(plane(12.0f, 8));
+  uint32_t sphere = scene.addShape(uvSphere(0.8f, 48));
+  uint32_t ring = scene.addShape(torus(0.6f, 0.22f, 48));
+  uint32_t cube = scene.addShape(box(glm::vec3(0.6f)));
+  uint32_t ico = scene.addShape(icosphere(0.7f, 2));
 
   scene.objects.push_back({"floor", floor, glm::mat4(1.0f),
                            material({0.45f, 0.45f, 0.42f}, glm::vec3(0.1f), 8.0f)});
   scene.objects.push_back({"sphere", sphere, translation({-2.2f, 0.8f, 0.0f}),
                            material({0.8f, 0.2f, 0.15f}, glm::vec3(0.6f), 64.0f)});
-  scene.objects.push_back({"torus", torus,
+  scene.objects.push_back({"torus", ring,
                            translation({-0.1f, 0.8f, -0.6f}) * rotationX(glm::radians(60.0f)),
                            material({0.2f, 0.6f, 0.3f}, glm::vec3(0.5f), 32.0f)});
-  scene.objects.push_back({"box", box,
+  scene.objects.push_back({"box", cube,
                            translation({1.9f, 0.6f, 0.3f}) * rotationY(glm::radians(30.0f)),
                            material({0.25f, 0.35f, 0.8f}, glm::vec3(0.4f), 16.0f)});
   scene.objects.push_back({"icosphere", ico, translation({0.2f, 0.7f, 1.6f}),
@@ -49,9 +73,89 @@ Scene defaultScene() {
   return scene;
 }
 
+// Spheres of five materials (matte to mirror-like highlights) under two
+// coloured point lights with attenuation and one directional light.
+Scene spheresScene() {
+  Scene scene;
+  scene.name = "spheres";
+  scene.camera.eye = {0.0f, 2.4f, 8.0f};
+  scene.camera.at = {0.0f, 0.8f, 0.0f};
+  scene.camera.fovyDegrees = 38.0f;
+  scene.ambient = glm::vec3(0.5f);
+  scene.background = {0.03f, 0.03f, 0.05f};
+  scene.lights.push_back(pointLight({-4.0f, 4.0f, 3.0f}, {1.0f, 0.85f, 0.7f}, {1.0f, 0.05f, 0.01f}));
+  scene.lights.push_back(pointLight({4.0f, 2.5f, 2.0f}, {0.35f, 0.45f, 0.9f}, {1.0f, 0.0f, 0.05f}));
+  scene.lights.push_back(directionalLight({0.2f, -1.0f, -0.5f}, glm::vec3(0.3f)));
+  uint32_t floor = scene.addShape(plane(14.0f, 8));
+  uint32_t sphere = scene.addShape(uvSphere(0.75f, 32));
+  scene.objects.push_back({"floor", floor, glm::mat4(1.0f),
+                           material({0.5f, 0.5f, 0.5f}, glm::vec3(0.05f), 4.0f)});
+  struct Ball {
+    const char* name;
+    glm::vec3 kd, ks;
+    float shininess;
+  };
+  const Ball balls[] = {
+      {"matte", {0.75f, 0.3f, 0.2f}, glm::vec3(0.0f), 1.0f},
+      {"plastic", {0.2f, 0.55f, 0.25f}, glm::vec3(0.5f), 32.0f},
+      {"glossy", {0.2f, 0.3f, 0.8f}, glm::vec3(0.8f), 128.0f},
+      {"metal", {0.35f, 0.3f, 0.15f}, {0.9f, 0.8f, 0.5f}, 64.0f},
+      {"chalk", {0.8f, 0.8f, 0.75f}, glm::vec3(0.15f), 8.0f},
+  };
+  for (int i = 0; i < 5; ++i)
+    scene.objects.push_back({balls[i].name, sphere, translation({-3.4f + 1.7f * float(i), 0.75f, 0.0f}),
+                             material(balls[i].kd, balls[i].ks, balls[i].shininess)});
+  return scene;
+}
+
+// The Utah teapot from Newell's 32 bicubic Bezier patches.
+Scene teapotScene() {
+  Scene scene;
+  scene.name = "teapot";
+  scene.camera.eye = {0.0f, 3.6f, 7.0f};
+  scene.camera.at = {0.0f, 1.1f, 0.0f};
+  scene.camera.fovyDegrees = 40.0f;
+  scene.ambient = glm::vec3(0.5f);
+  scene.background = {0.04f, 0.04f, 0.05f};
+  scene.lights.push_back(pointLight({-3.0f, 6.0f, 5.0f}, glm::vec3(1.0f), {1.0f, 0.0f, 0.005f}));
+  scene.lights.push_back(directionalLight({1.0f, -0.5f, -1.0f}, {0.2f, 0.2f, 0.25f}));
+  uint32_t pot = scene.addShape(teapot(8));
+  uint32_t floor = scene.addShape(plane(12.0f, 4));
+  scene.objects.push_back({"floor", floor, glm::mat4(1.0f),
+                           material({0.35f, 0.4f, 0.45f}, glm::vec3(0.05f), 4.0f)});
+  scene.objects.push_back({"teapot", pot, rotationY(glm::radians(-25.0f)),
+                           material({0.8f, 0.45f, 0.2f}, glm::vec3(0.7f), 48.0f)});
+  return scene;
+}
+
+}  // namespace
+
+// A coarse plane (one quad, two triangles, at the base tessellation) under a
+// point light whose highlight falls inside one large triangle: Gouraud, which
+// lights only the vertices, cannot show it; subdividing brings it back.
+Scene highlightScene(uint32_t quadsPerSide) {
+  Scene scene;
+  scene.name = "highlight";
+  scene.camera.eye = {0.0f, 4.0f, 4.0f};
+  scene.camera.at = {0.0f, 0.0f, 0.0f};
+  scene.camera.fovyDegrees = 50.0f;
+  scene.ambient = glm::vec3(0.2f);
+  scene.background = {0.0f, 0.0f, 0.0f};
+  scene.lights.push_back(pointLight({-0.5f, 1.0f, 0.9f}, glm::vec3(1.0f), {1.0f, 0.0f, 0.0f}));
+  uint32_t floor = scene.addShape(plane(4.0f, quadsPerSide));
+  scene.objects.push_back({"plane", floor, glm::mat4(1.0f),
+                           material({0.2f, 0.25f, 0.6f}, glm::vec3(0.9f), 64.0f)});
+  return scene;
+}
+
+namespace {
+
 const std::map<std::string, std::function<Scene()>>& registry() {
   static const std::map<std::string, std::function<Scene()>> scenes = {
       {"default", defaultScene},
+      {"highlight", [] { return highlightScene(1); }},
+      {"spheres", spheresScene},
+      {"teapot", teapotScene},
   };
   return scenes;
 }

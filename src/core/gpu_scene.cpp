@@ -74,13 +74,16 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
   return frame;
 }
 
-std::vector<gpu::ObjectData> makeObjectData(const Scene& scene, const glm::mat4& view) {
+std::vector<gpu::ObjectData> makeObjectData(const Scene& scene, const glm::mat4& view,
+                                           NormalTransform normals) {
   std::vector<gpu::ObjectData> objects;
   objects.reserve(scene.objects.size());
   for (const Object& object : scene.objects) {
     gpu::ObjectData data{};
     data.modelView = view * object.transform;
-    data.normalMatrix = glm::mat4(normalMatrix(data.modelView));
+    data.normalMatrix = normals == NormalTransform::InverseTranspose
+                            ? glm::mat4(normalMatrix(data.modelView))
+                            : glm::mat4(glm::mat3(data.modelView));
     objects.push_back(data);
   }
   return objects;

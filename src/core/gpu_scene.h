@@ -10,6 +10,11 @@
 
 namespace shadelab {
 
+// How normals go to eye space. Only the inverse transpose keeps them
+// perpendicular to the surface under non-uniform scale; the plain
+// model-view is the classic mistake, kept so tests can show what it breaks.
+enum class NormalTransform { InverseTranspose, ModelView };
+
 struct DrawItem {
   uint32_t firstIndex = 0;
   uint32_t indexCount = 0;
@@ -31,6 +36,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene);
 gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view, const glm::mat4& projection);
 // Model-view and its normal matrix (inverse transpose) per object.
 // Materials travel with the draws (DrawItem::constants).
-std::vector<gpu::ObjectData> makeObjectData(const Scene& scene, const glm::mat4& view);
+std::vector<gpu::ObjectData> makeObjectData(
+    const Scene& scene, const glm::mat4& view,
+    NormalTransform normals = NormalTransform::InverseTranspose);
 
 }  // namespace shadelab

@@ -1,7 +1,5 @@
 #include "core/image.h"
 
-#include <unistd.h>
-
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -10,6 +8,7 @@
 #include <system_error>
 
 #include "core/errors.h"
+#include "core/files.h"
 
 namespace shadelab {
 namespace fs = std::filesystem;
@@ -74,37 +73,20 @@ void checkOutputPath(const fs::path& path) {
   if (!isSupportedOutput(path))
     throw InputError("output '" + path.string() + "': unsupported extension '" +
                      path.extension().string() + "' (expected .png or .exr)");
-  fs::path parent = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code error;
-  if (!fs::is_directory(parent, error))
-    throw InputError("output '" + path.string() + "': folder '" + parent.string() +
-                     "' does not exist");
-  if (::access(parent.c_str(), W_OK) != 0)
-    throw InputError("output '" + path.string() + "': folder '" + parent.string() +
-                     "' is not writable");
-  if (fs::is_directory(path, error))
-    throw InputError("output '" + path.string() + "' is a folder, expected a file name");
+  checkWritableFolder(path);
 }
 
 namespace {
 
 void writeAtomically(const OIIO::ImageBuf& buffer, const fs::path& path) {
   checkOutputPath(path);
-  // Same folder (so rename is atomic), same extension (so OIIO picks the format).
-  fs::path temporary = path.parent_path() / ("." + path.stem().string() + ".tmp-" +
-                                             std::to_string(::getpid()) +
-                                             path.extension().string());
+  fs::path temporary = temporaryBeside(path);
   if (!buffer.write(temporary.string())) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
     throw InputError("cannot write '" + path.string() + "': " + buffer.geterror());
   }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) {
-    fs::remove(temporary, error);
-    throw InputError("cannot write '" + path.string() + "': " + error.message());
-  }
+  replaceWith(temporary, path);
 }
 
 }  // namespace

@@ -1,9 +1,14 @@
 #include "core/mesh.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <numeric>
+#include <span>
 
 namespace shadelab {
 
@@ -103,6 +108,188 @@ void computeTangents(Mesh& mesh) {
         // Mirrored UVs make dP/dv point against cross(n, t); the shader flips the bitangent by w.
         const float w = glm::dot(glm::cross(n, t), sums.alongV[v]) < 0.0f ? -1.0f : 1.0f;
         vertex.tangent = glm::vec4(t, w);
+    }
+}
+
+namespace {
+
+// Faces within this much of the crease angle still count as within it, so the two triangles of a
+// planar quad, whose normals differ only by rounding, stay one smooth group even at crease 0.
+constexpr float kCreaseSlackRadians = 1e-3f;
+
+struct FaceNormals {
+    std::vector<glm::vec3> weighted;  // cross product: length 2 * area, the area weight
+    std::vector<glm::vec3> unit;      // zero for zero-area (degenerate) triangles
+};
+
+FaceNormals faceNormals(const Mesh& mesh) {
+    FaceNormals faces;
+    faces.weighted.reserve(mesh.triangleCount());
+    faces.unit.reserve(mesh.triangleCount());
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const glm::vec3 a = mesh.vertices[mesh.indices[i]].position;
+        const glm::vec3 b = mesh.vertices[mesh.indices[i + 1]].position;
+        const glm::vec3 c = mesh.vertices[mesh.indices[i + 2]].position;
+        const glm::vec3 face = glm::cross(b - a, c - a);
+        faces.weighted.push_back(face);
+        faces.unit.push_back(safeNormalize(face, glm::vec3(0.0f)));
+    }
+    return faces;
+}
+
+// Bit patterns give a strict order even for NaN; adding +0 first turns -0 into +0 so the two
+// zeros, which compare equal, land in one group.
+std::array<uint32_t, 3> positionKey(glm::vec3 p) {
+    return {std::bit_cast<uint32_t>(p.x + 0.0f), std::bit_cast<uint32_t>(p.y + 0.0f),
+            std::bit_cast<uint32_t>(p.z + 0.0f)};
+}
+
+// Triangle corners (3 * triangle + k) listed per distinct vertex position, in triangle order.
+struct PositionGroups {
+    std::vector<uint32_t> offsets;  // group g owns corners[offsets[g] .. offsets[g + 1])
+    std::vector<uint32_t> corners;
+};
+
+PositionGroups groupCornersByPosition(const Mesh& mesh) {
+    std::vector<uint32_t> order(mesh.vertices.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return positionKey(mesh.vertices[a].position) < positionKey(mesh.vertices[b].position);
+    });
+    std::vector<uint32_t> groupOf(mesh.vertices.size());
+    uint32_t groupCount = 0;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const bool samePosition = i > 0 && positionKey(mesh.vertices[order[i]].position) ==
+                                               positionKey(mesh.vertices[order[i - 1]].position);
+        groupCount += samePosition ? 0 : 1;
+        groupOf[order[i]] = groupCount - 1;
+    }
+    // Counting sort of the corners by group keeps each group's corners in triangle order.
+    PositionGroups groups{std::vector<uint32_t>(groupCount + 1, 0u),
+                          std::vector<uint32_t>(mesh.indices.size())};
+    for (const uint32_t index : mesh.indices) {
+        ++groups.offsets[groupOf[index] + 1];
+    }
+    std::partial_sum(groups.offsets.begin(), groups.offsets.end(), groups.offsets.begin());
+    std::vector<uint32_t> next(groups.offsets.begin(), groups.offsets.end() - 1);
+    for (std::size_t corner = 0; corner < mesh.indices.size(); ++corner) {
+        groups.corners[next[groupOf[mesh.indices[corner]]]++] = static_cast<uint32_t>(corner);
+    }
+    return groups;
+}
+
+// One vertex's normal for one smooth group: the vertex itself, or a copy appended for the split.
+struct Claim {
+    uint32_t original;
+    glm::vec3 normal;
+    uint32_t index;
+};
+
+class CreaseSplitter {
+public:
+    CreaseSplitter(Mesh& mesh, const FaceNormals& faces, float cosLimit)
+        : mesh_(mesh), faces_(faces), cosLimit_(cosLimit), claimed_(mesh.vertices.size(), false) {}
+
+    void splitGroup(std::span<const uint32_t> corners) {
+        claims_.clear();
+        groupFaces_.clear();
+        for (const uint32_t corner : corners) {
+            if (groupFaces_.empty() || groupFaces_.back() != corner / 3) {
+                groupFaces_.push_back(corner / 3);
+            }
+        }
+        for (const uint32_t corner : corners) {
+            if (!isDegenerate(corner / 3)) {
+                mesh_.indices[corner] = claim(mesh_.indices[corner], smoothNormal(corner / 3));
+            }
+        }
+        // Zero-area triangles have no normal to compare, so they join a group already made.
+        for (const uint32_t corner : corners) {
+            if (isDegenerate(corner / 3)) {
+                mesh_.indices[corner] = claimAny(mesh_.indices[corner]);
+            }
+        }
+    }
+
+private:
+    bool isDegenerate(uint32_t face) const { return faces_.unit[face] == glm::vec3(0.0f); }
+
+    // Area-weighted sum of the faces at this position whose normals lie within the crease angle.
+    glm::vec3 smoothNormal(uint32_t face) const {
+        glm::vec3 sum(0.0f);
+        for (const uint32_t other : groupFaces_) {
+            if (glm::dot(faces_.unit[face], faces_.unit[other]) >= cosLimit_) {
+                sum += faces_.weighted[other];
+            }
+        }
+        return safeNormalize(sum, kFallbackNormal);
+    }
+
+    uint32_t claim(uint32_t original, glm::vec3 normal) {
+        for (const Claim& existing : claims_) {
+            if (existing.original == original && existing.normal == normal) {
+                return existing.index;
+            }
+        }
+        uint32_t index = original;
+        if (claimed_[original]) {
+            assert(mesh_.vertices.size() < std::numeric_limits<uint32_t>::max());
+            const Vertex copy = mesh_.vertices[original];
+            index = static_cast<uint32_t>(mesh_.vertices.size());
+            mesh_.vertices.push_back(copy);
+        }
+        claimed_[original] = true;
+        mesh_.vertices[index].normal = normal;
+        claims_.push_back({original, normal, index});
+        return index;
+    }
+
+    // A vertex touched only by zero-area triangles takes the normal of every face at its position.
+    uint32_t claimAny(uint32_t original) {
+        for (const Claim& existing : claims_) {
+            if (existing.original == original) {
+                return existing.index;
+            }
+        }
+        glm::vec3 sum(0.0f);
+        for (const uint32_t face : groupFaces_) {
+            sum += faces_.weighted[face];
+        }
+        return claim(original, safeNormalize(sum, kFallbackNormal));
+    }
+
+    Mesh& mesh_;
+    const FaceNormals& faces_;
+    float cosLimit_;
+    std::vector<bool> claimed_;
+    std::vector<Claim> claims_;
+    std::vector<uint32_t> groupFaces_;
+};
+
+}  // namespace
+
+void computeCreaseNormals(Mesh& mesh, float creaseAngleDegrees) {
+    assert(mesh.indices.size() % 3 == 0);
+    assert(!std::isnan(creaseAngleDegrees));
+    const bool hadTangents = std::any_of(mesh.vertices.begin(), mesh.vertices.end(),
+                                         [](const Vertex& v) { return v.tangent != glm::vec4(0.0f); });
+    const float limit = std::clamp(creaseAngleDegrees, 0.0f, 180.0f) * std::numbers::pi_v<float> / 180.0f +
+                        kCreaseSlackRadians;
+    // At 180 degrees even exactly opposite faces (cosine -1 give or take rounding) are smoothed.
+    const float cosLimit = limit >= std::numbers::pi_v<float> ? -2.0f : std::cos(limit);
+
+    for (Vertex& vertex : mesh.vertices) {
+        vertex.normal = kFallbackNormal;  // what unreferenced vertices keep, as in computeNormals
+    }
+    const FaceNormals faces = faceNormals(mesh);
+    const PositionGroups groups = groupCornersByPosition(mesh);
+    CreaseSplitter splitter(mesh, faces, cosLimit);
+    for (std::size_t g = 0; g + 1 < groups.offsets.size(); ++g) {
+        splitter.splitGroup(std::span(groups.corners).subspan(groups.offsets[g],
+                                                              groups.offsets[g + 1] - groups.offsets[g]));
+    }
+    if (hadTangents) {
+        computeTangents(mesh);
     }
 }
 

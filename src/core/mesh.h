@@ -57,6 +57,16 @@ Mesh makeTorus(float majorRadius, float minorRadius, uint32_t majorSegments, uin
 // A zero-length result (isolated or degenerate-only vertex) becomes (0,1,0) rather than NaN.
 void computeNormals(Mesh& mesh);
 
+// Area-weighted vertex normals that keep hard edges: faces meeting at a vertex are smoothed together
+// only if their normals differ by at most creaseAngleDegrees; otherwise the vertex is split (duplicated
+// with the same position/uv) so each smooth group gets its own normal. 180 smooths everything
+// (same as computeNormals); 0 gives flat facets. Tangents are recomputed if the mesh had them.
+// Vertices with identical positions are treated as one (a 24-vertex box can be smoothed). Each
+// corner sums the faces at its position within the angle of its own face, without chaining through
+// neighbours, so faces more than the angle apart never share a normal. Existing vertices are kept
+// (first smooth group) and split ones are appended; zero-area triangles never cause a split.
+void computeCreaseNormals(Mesh& mesh, float creaseAngleDegrees);
+
 // Per-triangle tangents from positions and UVs (Lengyel's method), accumulated per vertex,
 // Gram-Schmidt orthogonalised against the normal, handedness in w. Degenerate UVs give a tangent
 // perpendicular to the normal (never NaN).

@@ -20,7 +20,19 @@ glm::mat4 Camera::projectionMatrix(float aspect) const {
 
 uint32_t Scene::addMesh(Mesh mesh) {
   meshes.push_back(std::move(mesh));
+  shapes.push_back(ShapeDesc{});  // ShapeKind::Custom
   return uint32_t(meshes.size() - 1);
+}
+
+uint32_t Scene::addShape(const ShapeDesc& shape) {
+  meshes.push_back(buildShape(shape));
+  shapes.push_back(shape);
+  return uint32_t(meshes.size() - 1);
+}
+
+void Scene::retessellate(float scale) {
+  for (size_t i = 0; i < meshes.size(); ++i)
+    if (shapes[i].kind != ShapeKind::Custom) meshes[i] = buildShape(shapes[i], scale);
 }
 
 uint64_t Scene::triangleCount() const {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "core/mesh.h"
+#include "core/shape.h"
 
 namespace shadelab {
 
@@ -61,10 +62,14 @@ struct Scene {
   glm::vec3 ambient{1.0f};     // Ia
   glm::vec3 background{0.0f};  // linear clear colour
   std::vector<Light> lights;
-  std::vector<Mesh> meshes;
+  std::vector<Mesh> meshes;       // what is drawn
+  std::vector<ShapeDesc> shapes;  // parallel to meshes: how each was built (Custom: loaded)
   std::vector<Object> objects;
 
-  uint32_t addMesh(Mesh mesh);
+  uint32_t addMesh(Mesh mesh);           // a custom mesh (kept as is when re-tessellating)
+  uint32_t addShape(const ShapeDesc& shape);
+  // Rebuilds every procedural mesh at `scale` times its base tessellation.
+  void retessellate(float scale);
   uint64_t triangleCount() const;
 };
 
@@ -72,5 +77,7 @@ struct Scene {
 // listing the names that exist.
 Scene builtinScene(const std::string& name);
 std::vector<std::string> builtinSceneNames();
+// The `highlight` scene with its plane cut into quadsPerSide^2 quads.
+Scene highlightScene(uint32_t quadsPerSide);
 
 }  // namespace shadelab

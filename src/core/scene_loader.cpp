@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/errors.h"
+#include "core/scene_json.h"
 
 namespace shadelab {
 
@@ -15,6 +16,7 @@ Scene loadScene(const std::string& nameOrPath) {
   if (looksLikeFile) {
     if (!std::filesystem::exists(path))
       throw InputError("scene file '" + nameOrPath + "' does not exist");
+    if (ext == ".json") return loadSceneJson(path);
     throw InputError("scene file '" + nameOrPath + "': loading " +
                      (ext.empty() ? std::string("this file type") : ext) +
                      " scenes is not supported yet; use a built-in scene name");

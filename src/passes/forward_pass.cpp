@@ -43,14 +43,15 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   fragment_ = loadShader(device, "forward.frag");
 }
 
-void ForwardPass::prepare(uint32_t lightCount) {
+void ForwardPass::prepare(uint32_t lightCount, uint32_t samples) {
   for (int model = 0; model < kShadingModelCount; ++model) {
-    VariantKey key{ShadingModel(model), lightCount};
-    if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key.first, lightCount);
+    VariantKey key{ShadingModel(model), lightCount, samples};
+    if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
   }
 }
 
-Pipeline ForwardPass::createPipeline(ShadingModel model, uint32_t lightCount) const {
+Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
+  const auto& [model, lightCount, samples] = key;
   const AttachmentFormats& formats = formats_;
   struct {
     int32_t shadingModel;
@@ -106,7 +107,7 @@ Pipeline ForwardPass::createPipeline(ShadingModel model, uint32_t lightCount) co
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = formats.samples;
+  multisample.rasterizationSamples = VkSampleCountFlagBits(samples);
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
@@ -146,13 +147,14 @@ Pipeline ForwardPass::createPipeline(ShadingModel model, uint32_t lightCount) co
   return Pipeline(context_.device(), pipeline);
 }
 
-void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, VkDescriptorSet frameSet,
-                         const GpuScene& scene, const VkViewport& viewport) const {
+void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
+                         VkDescriptorSet frameSet, const GpuScene& scene,
+                         const VkViewport& viewport) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({model, scene.lightCount});
+  auto pipeline = pipelines_.find({model, scene.lightCount, samples});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for this light count");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,

@@ -4,7 +4,7 @@
 // Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index buffers.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
-#include <utility>
+#include <tuple>
 
 #include "core/context.h"
 #include "core/gpu_scene.h"
@@ -16,7 +16,6 @@ namespace shadelab {
 struct AttachmentFormats {
   VkFormat color = VK_FORMAT_R16G16B16A16_SFLOAT;
   VkFormat depth = VK_FORMAT_D32_SFLOAT;
-  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 
 class ForwardPass {
@@ -25,15 +24,16 @@ class ForwardPass {
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
   // Builds the pipelines of every shading model for a scene's light count
-  // (a specialization constant), before any frame records with them.
-  void prepare(uint32_t lightCount);
+  // (a specialization constant) and a sample count, before any frame
+  // records with them.
+  void prepare(uint32_t lightCount, uint32_t samples);
   // Records inside an active dynamic-rendering scope; sets its own viewport.
-  void record(VkCommandBuffer cmd, ShadingModel model, VkDescriptorSet frameSet,
+  void record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples, VkDescriptorSet frameSet,
               const GpuScene& scene, const VkViewport& viewport) const;
 
  private:
-  using VariantKey = std::pair<ShadingModel, uint32_t>;  // model, light count
-  Pipeline createPipeline(ShadingModel model, uint32_t lightCount) const;
+  using VariantKey = std::tuple<ShadingModel, uint32_t, uint32_t>;  // model, lights, samples
+  Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;
   AttachmentFormats formats_;

@@ -1,6 +1,8 @@
 #include "passes/renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 
 #include <glm/gtc/packing.hpp>
@@ -30,7 +32,7 @@ ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
 }  // namespace
 
 Renderer::Renderer(const Context& context)
-    : context_(context), forward_(context, {kColorFormat, kDepthFormat, VK_SAMPLE_COUNT_1_BIT}) {
+    : context_(context), forward_(context, {kColorFormat, kDepthFormat}) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -105,16 +107,26 @@ void Renderer::ensureObjectCapacity(Frame& frame, uint32_t count) {
   vkUpdateDescriptorSets(context_.device(), 2, writes, 0, nullptr);
 }
 
-void Renderer::ensureTarget(uint32_t width, uint32_t height) {
+void Renderer::ensureTarget(uint32_t width, uint32_t height, uint32_t samples) {
   if (target_.color && target_.color.desc().width == width &&
-      target_.color.desc().height == height)
+      target_.color.desc().height == height && target_.samples == samples)
     return;
+  target_ = Target{};
+  target_.samples = samples;
   ImageDesc color{kColorFormat, width, height};
   color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  target_.color = Image(context_, color);
   ImageDesc depth{kDepthFormat, width, height};
   depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-  target_ = Target{Image(context_, color), Image(context_, depth)};
+  depth.samples = VkSampleCountFlagBits(samples);
+  target_.depth = Image(context_, depth);
+  if (samples > 1) {
+    ImageDesc multisampled = color;
+    multisampled.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    multisampled.samples = VkSampleCountFlagBits(samples);
+    target_.multisampled = Image(context_, multisampled);
+  }
 }
 
 void Renderer::retire(Frame& frame, RenderStats& stats, double& lastCompletion) {
@@ -133,37 +145,31 @@ void Renderer::retire(Frame& frame, RenderStats& stats, double& lastCompletion) 
   frame.pending = false;
 }
 
-void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                           const RenderSettings& settings, const Buffer* readback) {
-  VkDevice device = context_.device();
-  uint32_t width = settings.width, height = settings.height;
-  glm::mat4 view = source.camera.viewMatrix();
-  glm::mat4 projection = source.camera.projectionMatrix(float(width) / float(height));
-  gpu::FrameData frameData = makeFrameData(source, view, projection);
-  std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
-  std::vector<gpu::ObjectData> objects = makeObjectData(source, view);
-  std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
-
-  VK_CHECK(vkResetCommandPool(device, frame.pool, 0));
-  VkCommandBuffer cmd = frame.cmd;
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-  vkCmdResetQueryPool(cmd, frame.timestamps, 0, 2);
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, frame.timestamps, 0);
-
+void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width,
+                              uint32_t height) {
   imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, target_.colorUse,
                ImageUse::ColorAttachment);
   imageBarrier(cmd, target_.depth.get(), VK_IMAGE_ASPECT_DEPTH_BIT, target_.depthUse,
                ImageUse::DepthAttachment);
   target_.colorUse = ImageUse::ColorAttachment;
   target_.depthUse = ImageUse::DepthAttachment;
-
+  bool multisampled = target_.samples > 1;
+  if (multisampled) {
+    imageBarrier(cmd, target_.multisampled.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+                 target_.multisampledUse, ImageUse::ColorAttachment);
+    target_.multisampledUse = ImageUse::ColorAttachment;
+  }
   VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  color.imageView = target_.color.view();
+  color.imageView = multisampled ? target_.multisampled.view() : target_.color.view();
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  // With MSAA the samples are averaged into the single-sampled image and dropped.
+  color.storeOp = multisampled ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+  if (multisampled) {
+    color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+    color.resolveImageView = target_.color.view();
+    color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  }
   color.clearValue.color = {{source.background.r, source.background.g, source.background.b, 1.0f}};
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   depth.imageView = target_.depth.view();
@@ -178,8 +184,40 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
   rendering.pColorAttachments = &color;
   rendering.pDepthAttachment = &depth;
   vkCmdBeginRendering(cmd, &rendering);
-  VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-  forward_.record(cmd, settings.shadingModel, frame.set, scene, viewport);
+}
+
+void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
+                           const RenderSettings& settings, const Buffer* readback) {
+  VkDevice device = context_.device();
+  uint32_t width = settings.width, height = settings.height;
+  glm::mat4 view = source.camera.viewMatrix();
+  float viewAspect = float(width) / float(std::max<size_t>(1, settings.splitModels.size())) /
+                     float(height);
+  glm::mat4 projection = source.camera.projectionMatrix(viewAspect);
+  gpu::FrameData frameData = makeFrameData(source, view, projection);
+  std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
+  std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
+  std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
+
+  VK_CHECK(vkResetCommandPool(device, frame.pool, 0));
+  VkCommandBuffer cmd = frame.cmd;
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  vkCmdResetQueryPool(cmd, frame.timestamps, 0, 2);
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, frame.timestamps, 0);
+
+  beginRendering(cmd, source, width, height);
+  // Split screen: equal columns, one shading model each, one camera.
+  std::vector<ShadingModel> models = settings.splitModels;
+  if (models.empty()) models.push_back(settings.shadingModel);
+  float columnWidth = float(width) / float(models.size());
+  for (size_t i = 0; i < models.size(); ++i) {
+    float left = std::floor(columnWidth * float(i));
+    float right = std::floor(columnWidth * float(i + 1));
+    VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
+    forward_.record(cmd, models[i], target_.samples, frame.set, scene, viewport);
+  }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
 
@@ -215,10 +253,14 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
                      std::to_string(settings.height) + ": width and height must be 1.." +
                      std::to_string(maxSize));
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
+  if (settings.msaaSamples != 1 && settings.msaaSamples != 4)
+    throw InputError("msaa " + std::to_string(settings.msaaSamples) + ": expected 1 or 4");
+  if (settings.splitModels.size() > settings.width)
+    throw InputError("split screen: more views than pixel columns");
 
   GpuScene gpuScene = uploadScene(context_, scene);
-  forward_.prepare(gpuScene.lightCount);
-  ensureTarget(settings.width, settings.height);
+  forward_.prepare(gpuScene.lightCount, settings.msaaSamples);
+  ensureTarget(settings.width, settings.height, settings.msaaSamples);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 

@@ -22,6 +22,11 @@ struct RenderSettings {
   uint32_t height = 720;
   ShadingModel shadingModel = ShadingModel::Phong;
   uint32_t frames = 1;  // frames drawn back to back; the last one is read back
+  uint32_t msaaSamples = 1;  // 1 or 4 (what lavapipe offers)
+  // Split screen: when not empty, the frame is cut into this many equal
+  // columns, side by side, each drawn with its model and the same camera.
+  std::vector<ShadingModel> splitModels;
+  NormalTransform normalTransform = NormalTransform::InverseTranspose;
 };
 
 struct RenderStats {
@@ -63,15 +68,19 @@ class Renderer {
     bool pending = false;  // submitted, fence not yet waited on
   };
   struct Target {
-    Image color;
+    Image color;         // single-sampled: what is read back
     Image depth;
+    Image multisampled;  // colour when msaaSamples > 1, resolved into `color`
     ImageUse colorUse = ImageUse::Undefined;
     ImageUse depthUse = ImageUse::Undefined;
+    ImageUse multisampledUse = ImageUse::Undefined;
+    uint32_t samples = 1;
   };
 
   void createFrame(Frame& frame);
   void ensureObjectCapacity(Frame& frame, uint32_t count);
-  void ensureTarget(uint32_t width, uint32_t height);
+  void ensureTarget(uint32_t width, uint32_t height, uint32_t samples);
+  void beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width, uint32_t height);
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
   void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
