@@ -24,13 +24,21 @@ float specularPower(float cosine, float shininess) {
   return shininess <= 0.0 ? 1.0 : pow(max(cosine, 0.0), shininess);
 }
 
+// normalize() of a zero vector is NaN; here it is the zero vector, which
+// contributes nothing (an eye exactly at the point, L = -V for Blinn, a
+// directional light with no direction).
+vec3 safeNormalize(vec3 v) {
+  float len = length(v);
+  return len > 1e-20 ? v / len : vec3(0.0);
+}
+
 vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn) {
   vec3 N = normal;
   float lengthN = length(N);
   // Zero-length or NaN normals (bad input) light as ambient only, never NaN.
   bool validNormal = lengthN > 1e-20 && !isnan(lengthN) && !isinf(lengthN);
   N = validNormal ? N / lengthN : vec3(0.0);
-  vec3 V = normalize(-position);
+  vec3 V = safeNormalize(-position);
   vec3 color = frame.ambient.rgb * material.ka;
   for (int i = 0; i < lightCount; ++i) {
     GpuLight light = frame.lights[i];
@@ -40,17 +48,17 @@ vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn
       vec3 toLight = light.position.xyz - position;
       float d = length(toLight);
       // A light exactly at the surface point has no direction: it lights nothing.
-      L = d > 1e-20 ? toLight / d : vec3(0.0);
+      L = safeNormalize(toLight);
       float denom = light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d;
       attenuation = denom > 0.0 ? 1.0 / denom : 0.0;
     } else {
-      L = normalize(light.position.xyz);
+      L = safeNormalize(light.position.xyz);
     }
     float NdotL = dot(N, L);
     if (NdotL <= 0.0) continue;
     float specular;
     if (blinn) {
-      specular = specularPower(dot(N, normalize(L + V)), material.shininess);
+      specular = specularPower(dot(N, safeNormalize(L + V)), material.shininess);
     } else {
       vec3 R = 2.0 * NdotL * N - L;  // reflection of L about N
       specular = specularPower(dot(R, V), material.shininess);

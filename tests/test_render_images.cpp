@@ -20,20 +20,33 @@ RenderSettings small(ShadingModel model = ShadingModel::Phong) {
   return {kWidth, kHeight, model, 1};
 }
 
-class ShadingGolden : public GpuTest, public ::testing::WithParamInterface<ShadingModel> {};
+// Every shading model on each scene with a golden: tests/golden/<scene>-<mode>.png.
+struct GoldenCase {
+  const char* scene;
+  ShadingModel model;
+};
 
-TEST_P(ShadingGolden, DefaultSceneMatchesGolden) {
-  ShadingModel model = GetParam();
-  ImageU8 image = render(builtinScene("default"), small(model));
-  EXPECT_TRUE(matchesGolden("default-" + std::string(shadingModelName(model)), image));
+class ShadingGolden : public GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
+
+TEST_P(ShadingGolden, MatchesGolden) {
+  auto [sceneName, model] = GetParam();
+  ImageU8 image = render(builtinScene(sceneName), small(model));
+  EXPECT_TRUE(matchesGolden(std::string(sceneName) + "-" + std::string(shadingModelName(model)), image));
 }
 
-INSTANTIATE_TEST_SUITE_P(AllModels, ShadingGolden,
-                         ::testing::Values(ShadingModel::Flat, ShadingModel::Gouraud,
-                                           ShadingModel::Phong, ShadingModel::BlinnPhong,
-                                           ShadingModel::Unlit),
+std::vector<GoldenCase> goldenCases() {
+  std::vector<GoldenCase> cases;
+  for (const char* scene : {"default", "spheres", "teapot"})
+    for (ShadingModel model : {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
+                               ShadingModel::BlinnPhong, ShadingModel::Unlit})
+      cases.push_back({scene, model});
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(ScenesAndModels, ShadingGolden, ::testing::ValuesIn(goldenCases()),
                          [](const auto& info) {
-                           std::string name(shadingModelName(info.param));
+                           std::string name = std::string(info.param.scene) + "_" +
+                                              std::string(shadingModelName(info.param.model));
                            std::erase(name, '-');
                            return name;
                          });
@@ -45,6 +58,18 @@ TEST_F(RenderImages, ComparisonRejectsMovedLight) {
   Scene scene = builtinScene("default");
   scene.lights[0].position += glm::vec3(0.5f, 0.0f, 0.0f);
   EXPECT_FALSE(matchesImage(loadGolden("default-phong"), render(scene, small())));
+}
+
+TEST_F(RenderImages, SpheresComparisonRejectsMovedLight) {
+  Scene scene = builtinScene("spheres");
+  scene.lights[0].position += glm::vec3(0.5f, 0.0f, 0.0f);
+  EXPECT_FALSE(matchesImage(loadGolden("spheres-phong"), render(scene, small())));
+}
+
+TEST_F(RenderImages, TeapotComparisonRejectsCoarserTessellation) {
+  Scene scene = builtinScene("teapot");
+  scene.retessellate(0.5f);  // 4 quads per patch side instead of 8
+  EXPECT_FALSE(matchesImage(loadGolden("teapot-flat"), render(scene, small(ShadingModel::Flat))));
 }
 
 TEST_F(RenderImages, ComparisonRejectsCameraTurnedOneDegree) {

@@ -15,6 +15,13 @@ float specularPower(float cosine, float shininess) {
   return shininess <= 0.0f ? 1.0f : std::pow(std::max(cosine, 0.0f), shininess);
 }
 
+// glm::normalize of a zero vector is NaN; this gives the zero vector, which
+// contributes nothing, exactly as safeNormalize in the shader.
+glm::vec3 safeNormalize(glm::vec3 v) {
+  const float len = glm::length(v);
+  return len > 1e-20f ? v / len : glm::vec3(0.0f);
+}
+
 }  // namespace
 
 glm::vec3 reflectAbout(glm::vec3 towardLight, glm::vec3 normal) {
@@ -30,7 +37,7 @@ glm::vec3 illuminate(const gpu::FrameData& frame, uint32_t lightCount, glm::vec3
   // Zero-length or NaN normals (bad input) light as ambient only, never NaN.
   const bool validNormal = lengthN > 1e-20f && !std::isnan(lengthN) && !std::isinf(lengthN);
   N = validNormal ? N / lengthN : glm::vec3(0.0f);
-  const glm::vec3 V = glm::normalize(-position);
+  const glm::vec3 V = safeNormalize(-position);
   glm::vec3 color = glm::vec3(frame.ambient) * material.ka;
   for (uint32_t i = 0; i < lightCount; ++i) {
     const gpu::GpuLight& light = frame.lights[i];
@@ -40,18 +47,18 @@ glm::vec3 illuminate(const gpu::FrameData& frame, uint32_t lightCount, glm::vec3
       const glm::vec3 toLight = glm::vec3(light.position) - position;
       const float d = glm::length(toLight);
       // A light exactly at the surface point has no direction: it lights nothing.
-      L = d > 1e-20f ? toLight / d : glm::vec3(0.0f);
+      L = safeNormalize(toLight);
       const float denom =
           light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d;
       attenuation = denom > 0.0f ? 1.0f / denom : 0.0f;
     } else {
-      L = glm::normalize(glm::vec3(light.position));
+      L = safeNormalize(glm::vec3(light.position));
     }
     const float NdotL = glm::dot(N, L);
     if (NdotL <= 0.0f) continue;
     float specular;
     if (blinn) {
-      specular = specularPower(glm::dot(N, glm::normalize(L + V)), material.shininess);
+      specular = specularPower(glm::dot(N, safeNormalize(L + V)), material.shininess);
     } else {
       const glm::vec3 R = reflectAbout(L, N);
       specular = specularPower(glm::dot(R, V), material.shininess);
