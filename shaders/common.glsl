@@ -7,5 +7,8 @@ layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameData 
 layout(set = 0, binding = BINDING_OBJECTS, std430) readonly buffer ObjectBlock { ObjectData objects[]; };
 layout(push_constant) uniform DrawBlock { DrawConstants draw; };
 layout(constant_id = SPEC_SHADING_MODEL) const int shadingModel = SHADING_PHONG;
-layout(constant_id = SPEC_LIGHT_COUNT) const int lightCount = 1;
+layout(constant_id = SPEC_POINT_LIGHTS) const int pointLightCount = 1;
+layout(constant_id = SPEC_DIRECTIONAL_LIGHTS) const int directionalLightCount = 0;
+// False when every point light has attenuation (1, 0, 0), so f_att = 1 needs no division.
+layout(constant_id = SPEC_ATTENUATED_POINT_LIGHTS) const bool pointLightsAttenuate = true;
 #endif

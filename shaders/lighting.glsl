@@ -28,42 +28,54 @@ float specularPower(float cosine, float shininess) {
 // contributes nothing (an eye exactly at the point, L = -V for Blinn, a
 // directional light with no direction).
 vec3 safeNormalize(vec3 v) {
-  float len = length(v);
-  return len > 1e-20 ? v / len : vec3(0.0);
+  float len2 = dot(v, v);
+  return len2 > 1e-40 ? v * inversesqrt(len2) : vec3(0.0);
+}
+
+// What one light adds at a point: f_att Ip [kd (N.L) + ks (R.V)^n], and
+// nothing where N.L <= 0 (the light is behind the surface). L is the unit
+// direction towards the light, or zero for a light with no direction.
+vec3 lightTerm(vec3 N, vec3 V, vec3 L, float attenuation, vec3 intensity,
+               SurfaceMaterial material, bool blinn) {
+  float NdotL = dot(N, L);
+  float specular;
+  if (blinn) {
+    specular = specularPower(dot(N, safeNormalize(L + V)), material.shininess);
+  } else {
+    vec3 R = 2.0 * NdotL * N - L;  // reflection of L about N
+    specular = specularPower(dot(R, V), material.shininess);
+  }
+  // A select, not a branch: lavapipe runs SIMD lanes in lockstep.
+  float facing = NdotL > 0.0 ? attenuation : 0.0;
+  return facing * intensity * (material.kd * NdotL + material.ks * specular);
 }
 
 vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn) {
-  vec3 N = normal;
-  float lengthN = length(N);
-  // Zero-length or NaN normals (bad input) light as ambient only, never NaN.
-  bool validNormal = lengthN > 1e-20 && !isnan(lengthN) && !isinf(lengthN);
-  N = validNormal ? N / lengthN : vec3(0.0);
+  // Zero-length, NaN or infinite normals (bad input) light as ambient only,
+  // never NaN: a NaN length fails both comparisons.
+  float lengthN2 = dot(normal, normal);
+  vec3 N = lengthN2 > 1e-40 && lengthN2 < 1e30 ? normal * inversesqrt(lengthN2) : vec3(0.0);
   vec3 V = safeNormalize(-position);
   vec3 color = frame.ambient.rgb * material.ka;
-  for (int i = 0; i < lightCount; ++i) {
+  // frame.lights holds the point lights first, then the directional ones.
+  for (int i = 0; i < pointLightCount; ++i) {
     GpuLight light = frame.lights[i];
-    vec3 L;
-    float attenuation = 1.0;
-    if (light.type.x == LIGHT_POINT) {
-      vec3 toLight = light.position.xyz - position;
-      float d = length(toLight);
-      // A light exactly at the surface point has no direction: it lights nothing.
-      L = safeNormalize(toLight);
-      float denom = light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d;
+    vec3 toLight = light.position.xyz - position;
+    float d2 = dot(toLight, toLight);
+    // A light exactly at the surface point has no direction: it lights nothing.
+    float inverseD = d2 > 1e-40 ? inversesqrt(d2) : 0.0;
+    float attenuation = 1.0;  // f_att of (a, b, c) = (1, 0, 0)
+    if (pointLightsAttenuate) {
+      float d = d2 * inverseD;
+      float denom = light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d2;
       attenuation = denom > 0.0 ? 1.0 / denom : 0.0;
-    } else {
-      L = safeNormalize(light.position.xyz);
     }
-    float NdotL = dot(N, L);
-    if (NdotL <= 0.0) continue;
-    float specular;
-    if (blinn) {
-      specular = specularPower(dot(N, safeNormalize(L + V)), material.shininess);
-    } else {
-      vec3 R = 2.0 * NdotL * N - L;  // reflection of L about N
-      specular = specularPower(dot(R, V), material.shininess);
-    }
-    color += attenuation * light.intensity.rgb * (material.kd * NdotL + material.ks * specular);
+    color += lightTerm(N, V, toLight * inverseD, attenuation, light.intensity.rgb, material, blinn);
+  }
+  for (int i = pointLightCount; i < pointLightCount + directionalLightCount; ++i) {
+    GpuLight light = frame.lights[i];
+    // Unit length already (or zero), normalised once on the host.
+    color += lightTerm(N, V, light.position.xyz, 1.0, light.intensity.rgb, material, blinn);
   }
   return color;
 }

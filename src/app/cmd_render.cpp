@@ -18,12 +18,14 @@ struct RenderOptions {
   std::string size = "1280x720";
   std::string mode = "phong";
   uint32_t frames = 1;
+  float tessellation = 1.0f;
+  uint32_t msaa = 1;
 };
 
 void printTimings(const RenderStats& stats) {
   // The first frames include lavapipe's lazy pipeline compile: report them
   // apart and take the steady statistics over the rest.
-  size_t warmup = std::min<size_t>(stats.deviceMs.size() / 10 + 1, stats.deviceMs.size() - 1);
+  size_t warmup = warmupFrames(stats.deviceMs.size());
   std::vector<double> device(stats.deviceMs.begin() + long(warmup), stats.deviceMs.end());
   std::vector<double> wall(stats.wallMs.begin() + long(warmup), stats.wallMs.end());
   std::printf("first frame: %.2f ms wall, %.2f ms device\n", stats.wallMs.front(),
@@ -39,12 +41,15 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   ShadingModel model = parseShadingModelOption(options.mode, "--mode");
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  if (options.tessellation != 1.0f) scene.retessellate(options.tessellation);
 
   std::unique_ptr<Context> context = openContext(global);
   RenderResult result;
   {
     Renderer renderer(*context);
-    result = renderer.renderToImage(scene, {size.width, size.height, model, options.frames});
+    RenderSettings settings{size.width, size.height, model, options.frames};
+    settings.msaaSamples = options.msaa;
+    result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
   std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws)\n",
@@ -73,6 +78,14 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                       "Frames to draw (2 in flight); above 1, prints frame-time statistics")
       ->capture_default_str()
       ->check(CLI::Range(1u, 100000u));
+  command->add_option("--tess", options->tessellation,
+                      "Scale the tessellation of procedural shapes and Bezier patches (segments "
+                      "per side x FACTOR; icosphere levels + log2 FACTOR)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.125f, 16.0f));
+  command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
+      ->capture_default_str()
+      ->check(CLI::IsMember({1u, 4u}));
   return [options, &global] { return runRender(*options, global); };
 }
 

@@ -17,6 +17,7 @@ using CommandRunner = std::function<int()>;
 
 CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global);
+CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addInfoCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace shadelab

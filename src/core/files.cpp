@@ -11,8 +11,13 @@ namespace shadelab {
 namespace fs = std::filesystem;
 
 fs::path temporaryBeside(const fs::path& target) {
-  return target.parent_path() / ("." + target.stem().string() + ".tmp-" +
-                                 std::to_string(::getpid()) + target.extension().string());
+  // Built by appending: GCC 12 misreports "." + std::string&& under -O2 (-Wrestrict).
+  std::string name = ".";
+  name += target.stem().string();
+  name += ".tmp-";
+  name += std::to_string(::getpid());
+  name += target.extension().string();
+  return target.parent_path() / name;
 }
 
 void replaceWith(const fs::path& temporary, const fs::path& target) {

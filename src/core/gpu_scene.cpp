@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include <meshoptimizer.h>
+
 #include "core/transform.h"
 
 namespace shadelab {
@@ -21,6 +23,27 @@ static_assert(offsetof(gpu::DrawConstants, kd) == 16);
 static_assert(offsetof(gpu::DrawConstants, object) == 48);
 static_assert(sizeof(gpu::DrawConstants) == 64);  // within the 128 bytes Vulkan guarantees
 
+namespace {
+
+// Triangle order for the device: first for the post-transform vertex cache
+// (lavapipe shades vertices on one thread, so re-used vertices are the big
+// win on dense meshes), then front-to-back-ish clusters against overdraw
+// (1.05 lets a cluster cost 5% more cache misses). Only the order of
+// triangles changes, never which ones, their winding or the vertices, so the
+// scene stays as authored and tests can index its meshes.
+std::vector<uint32_t> deviceTriangleOrder(const Mesh& mesh) {
+  std::vector<uint32_t> order(mesh.indices.size());
+  if (mesh.indices.empty()) return order;
+  meshopt_optimizeVertexCache(order.data(), mesh.indices.data(), mesh.indices.size(),
+                              mesh.vertices.size());
+  meshopt_optimizeOverdraw(order.data(), order.data(), order.size(),
+                           &mesh.vertices[0].position.x, mesh.vertices.size(), sizeof(Vertex),
+                           1.05f);
+  return order;
+}
+
+}  // namespace
+
 GpuScene uploadScene(const Context& context, const Scene& scene) {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
@@ -29,10 +52,11 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     meshRanges.push_back({uint32_t(indices.size()), uint32_t(mesh.indices.size()),
                           int32_t(vertices.size()), {}});
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
-    indices.insert(indices.end(), mesh.indices.begin(), mesh.indices.end());
+    std::vector<uint32_t> order = deviceTriangleOrder(mesh);
+    indices.insert(indices.end(), order.begin(), order.end());
   }
   GpuScene gpuScene;
-  gpuScene.lightCount = uint32_t(std::min<size_t>(scene.lights.size(), MAX_LIGHTS));
+  gpuScene.lights = lightLayoutOf(scene);
   gpuScene.vertices = uploadBuffer(context, std::as_bytes(std::span(vertices)),
                                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   gpuScene.indices = uploadBuffer(context, std::as_bytes(std::span(indices)),
@@ -50,22 +74,39 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
   return gpuScene;
 }
 
+LightLayout lightLayoutOf(const Scene& scene) {
+  LightLayout layout;
+  size_t count = std::min<size_t>(scene.lights.size(), MAX_LIGHTS);
+  for (size_t i = 0; i < count; ++i) {
+    const Light& light = scene.lights[i];
+    ++(light.type == LightType::Point ? layout.point : layout.directional);
+    if (light.type == LightType::Point && light.attenuation != glm::vec3(1.0f, 0.0f, 0.0f))
+      layout.attenuated = true;
+  }
+  return layout;
+}
+
 gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
                              const glm::mat4& projection) {
   gpu::FrameData frame{};
   frame.projection = projection;
   frame.ambient = glm::vec4(scene.ambient, 0.0f);
-  size_t count = std::min<size_t>(scene.lights.size(), MAX_LIGHTS);
-  frame.lightCount = glm::ivec4(int(count), 0, 0, 0);
-  for (size_t i = 0; i < count; ++i) {
+  LightLayout layout = lightLayoutOf(scene);
+  frame.lightCount = glm::ivec4(int(layout.point), int(layout.directional), 0, 0);
+  uint32_t nextPoint = 0, nextDirectional = layout.point;
+  for (size_t i = 0; i < layout.total(); ++i) {
     const Light& light = scene.lights[i];
-    gpu::GpuLight& out = frame.lights[i];
-    if (light.type == LightType::Point) {
+    bool point = light.type == LightType::Point;
+    gpu::GpuLight& out = frame.lights[point ? nextPoint++ : nextDirectional++];
+    if (point) {
       out.position = view * glm::vec4(light.position, 1.0f);
       out.type.x = LIGHT_POINT;
     } else {
-      // Directions transform without translation; the shader wants "towards the light".
-      out.position = glm::vec4(glm::mat3(view) * -light.direction, 0.0f);
+      // Directions transform without translation; the shader wants the unit
+      // direction towards the light (zero stays zero: it lights nothing).
+      glm::vec3 toward = glm::mat3(view) * -light.direction;
+      float length = glm::length(toward);
+      out.position = glm::vec4(length > 0.0f ? toward / length : glm::vec3(0.0f), 0.0f);
       out.type.x = LIGHT_DIRECTIONAL;
     }
     out.intensity = glm::vec4(light.intensity, 0.0f);

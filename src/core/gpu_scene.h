@@ -2,6 +2,7 @@
 // A scene's geometry on the device (one vertex and one index buffer for all
 // meshes) and the per-frame data the shaders read, built from the scene and
 // the camera.
+#include <compare>
 #include <vector>
 
 #include "core/resources.h"
@@ -22,17 +23,32 @@ struct DrawItem {
   gpu::DrawConstants constants{};  // material and object index, pushed per draw
 };
 
+// How many lights of each kind the shaders loop over: specialization
+// constants, so a pipeline is built per layout (point lights + directional
+// lights <= MAX_LIGHTS).
+struct LightLayout {
+  uint32_t point = 0;
+  uint32_t directional = 0;
+  bool attenuated = false;  // some point light has attenuation other than (1, 0, 0)
+  uint32_t total() const { return point + directional; }
+  auto operator<=>(const LightLayout&) const = default;
+};
+
+// The first MAX_LIGHTS lights of the scene, as makeFrameData orders them.
+LightLayout lightLayoutOf(const Scene& scene);
+
 struct GpuScene {
   Buffer vertices;
   Buffer indices;
   std::vector<DrawItem> draws;
   uint64_t triangles = 0;
-  uint32_t lightCount = 0;  // lights the shaders loop over (at most MAX_LIGHTS)
+  LightLayout lights;
 };
 
 GpuScene uploadScene(const Context& context, const Scene& scene);
 
-// Lights move to eye space, so the shaders light with V = -position.
+// Lights move to eye space, so the shaders light with V = -position; the
+// first MAX_LIGHTS scene lights go in, point lights first, then directional.
 gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view, const glm::mat4& projection);
 // Model-view and its normal matrix (inverse transpose) per object.
 // Materials travel with the draws (DrawItem::constants).

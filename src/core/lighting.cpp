@@ -28,17 +28,37 @@ glm::vec3 reflectAbout(glm::vec3 towardLight, glm::vec3 normal) {
   return 2.0f * glm::dot(normal, towardLight) * normal - towardLight;
 }
 
+namespace {
+
+// What one light adds: f_att Ip [kd (N.L) + ks (R.V)^n], nothing where N.L <= 0.
+glm::vec3 lightTerm(glm::vec3 N, glm::vec3 V, glm::vec3 L, float attenuation, glm::vec3 intensity,
+                    const Material& material, bool blinn) {
+  const float NdotL = glm::dot(N, L);
+  float specular;
+  if (blinn) {
+    specular = specularPower(glm::dot(N, safeNormalize(L + V)), material.shininess);
+  } else {
+    specular = specularPower(glm::dot(reflectAbout(L, N), V), material.shininess);
+  }
+  const float facing = NdotL > 0.0f ? attenuation : 0.0f;
+  return facing * intensity * (material.kd * NdotL + material.ks * specular);
+}
+
+}  // namespace
+
 glm::vec3 illuminate(const gpu::FrameData& frame, uint32_t lightCount, glm::vec3 position,
                      glm::vec3 normal, const Material& material, bool blinn) {
   assert(lightCount <= MAX_LIGHTS);
   lightCount = std::min<uint32_t>(lightCount, MAX_LIGHTS);
-  glm::vec3 N = normal;
-  const float lengthN = glm::length(N);
-  // Zero-length or NaN normals (bad input) light as ambient only, never NaN.
-  const bool validNormal = lengthN > 1e-20f && !std::isnan(lengthN) && !std::isinf(lengthN);
-  N = validNormal ? N / lengthN : glm::vec3(0.0f);
+  // Zero-length, NaN or infinite normals (bad input) light as ambient only,
+  // never NaN: a NaN length fails both comparisons.
+  const float lengthN2 = glm::dot(normal, normal);
+  const glm::vec3 N = lengthN2 > 1e-40f && lengthN2 < 1e30f ? normal / std::sqrt(lengthN2)
+                                                           : glm::vec3(0.0f);
   const glm::vec3 V = safeNormalize(-position);
   glm::vec3 color = glm::vec3(frame.ambient) * material.ka;
+  // Lights in any order, each by its type (the shader relies on makeFrameData
+  // putting point lights first; the equation does not care).
   for (uint32_t i = 0; i < lightCount; ++i) {
     const gpu::GpuLight& light = frame.lights[i];
     glm::vec3 L;
@@ -54,17 +74,7 @@ glm::vec3 illuminate(const gpu::FrameData& frame, uint32_t lightCount, glm::vec3
     } else {
       L = safeNormalize(glm::vec3(light.position));
     }
-    const float NdotL = glm::dot(N, L);
-    if (NdotL <= 0.0f) continue;
-    float specular;
-    if (blinn) {
-      specular = specularPower(glm::dot(N, safeNormalize(L + V)), material.shininess);
-    } else {
-      const glm::vec3 R = reflectAbout(L, N);
-      specular = specularPower(glm::dot(R, V), material.shininess);
-    }
-    color +=
-        attenuation * glm::vec3(light.intensity) * (material.kd * NdotL + material.ks * specular);
+    color += lightTerm(N, V, L, attenuation, glm::vec3(light.intensity), material, blinn);
   }
   return color;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The Phong illumination equation on the CPU, a line-for-line twin of
+// The Phong illumination equation on the CPU, the twin of
 // shaders/lighting.glsl with the same edge cases, so tests can check GPU
 // pixels against it and the CPU reference tracer can light with it:
 //   I = Ia ka + sum_i f_att,i Ip,i [kd (N.L_i) + ks (R_i.V)^n],  f_att = 1/(a + b d + c d^2)

@@ -15,4 +15,9 @@ double percentile(std::vector<double> samples, double p) {
   return samples[below] * (1.0 - t) + samples[above] * t;
 }
 
+size_t warmupFrames(size_t frames) {
+  if (frames == 0) return 0;
+  return std::min(frames / 10 + 1, frames - 1);
+}
+
 }  // namespace shadelab

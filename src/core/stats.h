@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <vector>
 
 namespace shadelab {
@@ -7,5 +8,10 @@ namespace shadelab {
 // Returns 0 for an empty sample.
 double percentile(std::vector<double> samples, double p);
 inline double median(const std::vector<double>& samples) { return percentile(samples, 50.0); }
+
+// Frames to leave out of steady-state statistics for a run of `frames`: the
+// first ones include lavapipe's lazy pipeline compile. A tenth plus one,
+// always leaving at least one frame.
+size_t warmupFrames(size_t frames);
 
 }  // namespace shadelab

@@ -43,25 +43,32 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   fragment_ = loadShader(device, "forward.frag");
 }
 
-void ForwardPass::prepare(uint32_t lightCount, uint32_t samples) {
+void ForwardPass::prepare(LightLayout lights, uint32_t samples) {
   for (int model = 0; model < kShadingModelCount; ++model) {
-    VariantKey key{ShadingModel(model), lightCount, samples};
+    VariantKey key{ShadingModel(model), lights, samples};
     if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
   }
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lightCount, samples] = key;
+  const auto& [model, lights, samples] = key;
   const AttachmentFormats& formats = formats_;
   struct {
     int32_t shadingModel;
-    int32_t lightCount;
-  } constants{int32_t(model), int32_t(lightCount)};
+    int32_t pointLights;
+    int32_t directionalLights;
+    VkBool32 attenuated;
+  } constants{int32_t(model), int32_t(lights.point), int32_t(lights.directional),
+              lights.attenuated ? VK_TRUE : VK_FALSE};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
-      {/* constantID= */ SPEC_LIGHT_COUNT, offsetof(decltype(constants), lightCount), 4},
+      {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
+      {/* constantID= */ SPEC_DIRECTIONAL_LIGHTS, offsetof(decltype(constants), directionalLights),
+       4},
+      {/* constantID= */ SPEC_ATTENUATED_POINT_LIGHTS, offsetof(decltype(constants), attenuated),
+       4},
   };
-  VkSpecializationInfo specialization{2, entries, sizeof(constants), &constants};
+  VkSpecializationInfo specialization{4, entries, sizeof(constants), &constants};
 
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   auto addStage = [&](VkShaderStageFlagBits stage, VkShaderModule module) {
@@ -154,8 +161,8 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t sampl
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({model, scene.lightCount, samples});
-  assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for this light count");
+  auto pipeline = pipelines_.find({model, scene.lights, samples});
+  assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
                           nullptr);

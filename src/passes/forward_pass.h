@@ -23,16 +23,16 @@ class ForwardPass {
   ForwardPass(const Context& context, const AttachmentFormats& formats);
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
-  // Builds the pipelines of every shading model for a scene's light count
-  // (a specialization constant) and a sample count, before any frame
-  // records with them.
-  void prepare(uint32_t lightCount, uint32_t samples);
+  // Builds the pipelines of every shading model for a scene's light layout
+  // (specialization constants) and a sample count, before any frame records
+  // with them.
+  void prepare(LightLayout lights, uint32_t samples);
   // Records inside an active dynamic-rendering scope; sets its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples, VkDescriptorSet frameSet,
               const GpuScene& scene, const VkViewport& viewport) const;
 
  private:
-  using VariantKey = std::tuple<ShadingModel, uint32_t, uint32_t>;  // model, lights, samples
+  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t>;  // model, lights, samples
   Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;

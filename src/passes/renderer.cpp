@@ -259,7 +259,7 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     throw InputError("split screen: more views than pixel columns");
 
   GpuScene gpuScene = uploadScene(context_, scene);
-  forward_.prepare(gpuScene.lightCount, settings.msaaSamples);
+  forward_.prepare(gpuScene.lights, settings.msaaSamples);
   ensureTarget(settings.width, settings.height, settings.msaaSamples);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
