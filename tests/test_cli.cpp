@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -167,11 +168,80 @@ TEST_F(Cli, InfoNamesDeviceDriverAndVersion) {
 }
 
 TEST_F(Cli, HelpSucceedsForEachCommand) {
-  for (const char* command : {"--help", "render --help", "info --help"}) {
+  for (const char* command :
+       {"--help", "render --help", "compare --help", "bench --help", "info --help"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 0) << command << "\n" << r.output;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << command;
   }
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream file(path);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(Cli, RenderLoadsJsonSceneFile) {
+  CommandResult r = run(std::string("render ") + SHADELAB_ASSET_DIR + "/scenes/three-spheres.json -o " +
+                        out("a.png") + " --size 64x36");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(pngSize(out("a.png")), std::make_pair(64u, 36u));
+}
+
+TEST_F(Cli, MalformedJsonSceneNamesFileAndField) {
+  std::ofstream(out("bad.json")) << R"({"camera": {"eye": [0, 1], "at": [0, 0, 0]}, "objects": []})";
+  CommandResult r = run("render " + out("bad.json") + " -o " + out("a.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("bad.json"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("camera.eye"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 1u);  // only the scene file itself
+}
+
+TEST_F(Cli, TessellationOutOfRangeIsAUsageError) {
+  CommandResult r = run("render -o " + out("a.png") + " --tess 0");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--tess"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
+TEST_F(Cli, CompareWritesSheetAndNumbers) {
+  CommandResult r = run("compare teapot -o " + out("sheet.png") + " --size 64x36 --modes flat,phong");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  // Reference, flat and phong across; images above heatmaps and labels.
+  auto [width, height] = pngSize(out("sheet.png"));
+  EXPECT_GE(width, 3u * 64u);
+  EXPECT_GE(height, 2u * 36u);
+  std::string json = readText(out("sheet.json"));
+  for (const char* key : {"\"flat\"", "\"phong\"", "\"rmse\"", "\"psnr\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
+  EXPECT_EQ(filesLeft(), 2u);
+}
+
+TEST_F(Cli, CompareUnknownModeIsAnInputError) {
+  CommandResult r = run("compare -o " + out("sheet.png") + " --modes flat,shiny");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("shiny"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
+TEST_F(Cli, BenchWritesOneCsvRowPerSetting) {
+  CommandResult r = run("bench spheres -o " + out("bench") +
+                        " --size 64x36 --frames 4 --rounds 2 --modes unlit,phong --tess 0.5,1");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::string csv = readText(out("bench/results.csv"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;
+  EXPECT_EQ(csv.rfind("scene,width,height,mode,tessellation,msaa,triangles,frames,", 0), 0u) << csv;
+  // 2 rounds x (4 frames - 1 warm-up) steady frames per setting.
+  EXPECT_NE(csv.find("spheres,64,36,phong,0.5,1,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",6,"), std::string::npos) << csv;
+  EXPECT_NE(r.output.find("x floor"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, BenchBadSampleCountIsAUsageError) {
+  CommandResult r = run("bench -o " + out("bench") + " --msaa 1,3");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--msaa"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
 }
 
 }  // namespace
