@@ -297,6 +297,30 @@ void PrintTo(const ErrorCase& errorCase, std::ostream* out) {
 
 class SceneJsonError : public testing::TestWithParam<ErrorCase> {};
 
+// crease_angle replaces a shape's exact normals by creased averages: a box
+// smoothed at 180 degrees has every normal leaning into all three axes
+// (area-weighted, so not exactly along the diagonal: a face's two triangles
+// meet at only two of its corners); an icosphere at 0 degrees is split into
+// one vertex per triangle corner.
+TEST(SceneJson, CreaseAngleRecomputesNormals) {
+  Scene scene = parse(R"({"objects": [
+    {"shape": "box", "crease_angle": 180}, {"shape": "box"},
+    {"shape": "icosphere", "tessellation": 1, "crease_angle": 0}]})");
+  ASSERT_EQ(scene.meshes.size(), 3u);
+  const Mesh& smoothBox = scene.meshes[scene.objects[0].mesh];
+  const Mesh& box = scene.meshes[scene.objects[1].mesh];
+  for (const Vertex& v : smoothBox.vertices) {
+    EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-5f);
+    EXPECT_GT(glm::dot(v.normal, glm::normalize(v.position)), 0.94f);
+    EXPECT_GT(glm::min(glm::abs(v.normal.x), glm::min(glm::abs(v.normal.y), glm::abs(v.normal.z))),
+              0.3f);
+  }
+  for (const Vertex& v : box.vertices)
+    EXPECT_NEAR(glm::dot(v.normal, glm::normalize(v.position)), 1.0f / std::sqrt(3.0f), 1e-5f);
+  const Mesh& faceted = scene.meshes[scene.objects[2].mesh];
+  EXPECT_EQ(faceted.vertices.size(), 3 * faceted.triangleCount());
+}
+
 TEST_P(SceneJsonError, ThrowsInputErrorNamingPathAndProblem) {
   std::string message = errorOf(GetParam().json);
   for (const std::string& fragment : GetParam().fragments)
@@ -318,6 +342,10 @@ const ErrorCase kErrorCases[] = {
    {"objects[0].colour: unknown field \"colour\"", "material", "radius", "tessellation"}},
   {"MaterialOnAGroup", oneObject(R"("material": "x", "children": [{"shape": "box"}])"),
    {"objects[0].material: unknown field", "one of name, shape, transform, children"}},
+  {"CreaseAngleOutOfRange", oneObject(R"("shape": "sphere", "crease_angle": 200)"),
+   {"objects[0].crease_angle: crease_angle 200 is out of range", "from 0 to 180"}},
+  {"CreaseAngleOnAGroup", oneObject(R"("crease_angle": 30, "children": [{"shape": "box"}])"),
+   {"objects[0].crease_angle: unknown field"}},
   {"TessellationOnABox", oneObject(R"("shape": "box", "tessellation": 4)"),
    {"objects[0].tessellation: unknown field"}},
   {"UnknownShape", oneObject(R"("shape": "cube")"), {"objects[0].shape: unknown shape \"cube\","

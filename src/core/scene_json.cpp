@@ -53,6 +53,10 @@
 //               tessellation 16 segments around the ring (3..1024), half as many around the tube
 //   "teapot"    the Utah teapot standing on y = 0, spout along +x, 3.15 high, 6.4 long;
 //               tessellation 16 quads per patch side (1..64; 32 patches)
+// Every shape may have "crease_angle" (degrees, 0..180): its normals are then recomputed as
+// area-weighted averages, with vertices split wherever faces meet at more than the angle
+// (0: faceted, as flat shading sees it; 180: all smooth, e.g. a box with rounded shading).
+// Without it, shapes keep their exact normals.
 // Objects with identical shape descriptions share one mesh.
 //
 // Transforms: "transform" is a list of steps, each an object with exactly one key:
@@ -265,6 +269,13 @@ ShapeDesc parseShape(const Field& object, const ShapeSpec& spec) {
       shape.size = f->positive();
   }
   if (auto f = object.optional("radius")) shape.radius = f->positive();
+  if (auto f = object.optional("crease_angle")) {
+    float degrees = f->number();
+    if (!(degrees >= 0.0f && degrees <= 180.0f))
+      f->fail("crease_angle " + formatNumber(degrees) + " is out of range",
+              "an angle in degrees from 0 to 180");
+    shape.creaseAngleDegrees = degrees;
+  }
   if (spec.kind == ShapeKind::Torus) {
     if (auto f = object.optional("major_radius")) shape.majorRadius = f->positive();
     if (auto f = object.optional("minor_radius")) shape.minorRadius = f->positive();
@@ -338,7 +349,7 @@ glm::mat4 parseTransform(const Field& field) {
 bool sameShape(const ShapeDesc& a, const ShapeDesc& b) {
   return a.kind == b.kind && a.size == b.size && a.halfExtents == b.halfExtents &&
          a.radius == b.radius && a.majorRadius == b.majorRadius && a.minorRadius == b.minorRadius &&
-         a.tessellation == b.tessellation;
+         a.tessellation == b.tessellation && a.creaseAngleDegrees == b.creaseAngleDegrees;
 }
 
 // Walks the object tree depth first, keeping the parent's world matrix: the
@@ -358,6 +369,7 @@ class ObjectBuilder {
     Names allowed = {"name", "shape", "transform", "children"};
     if (spec) {
       allowed.push_back("material");
+      allowed.push_back("crease_angle");
       allowed.insert(allowed.end(), spec->fields.begin(), spec->fields.end());
     }
     field.expectObject(allowed);

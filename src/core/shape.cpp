@@ -13,9 +13,9 @@ uint32_t scaled(uint32_t base, float scale, uint32_t minimum) {
   return std::max(minimum, uint32_t(std::lround(float(base) * scale)));
 }
 
-}  // namespace
-
-Mesh buildShape(const ShapeDesc& shape, float scale) {
+// The shape with the normals its construction gives (exact for procedural
+// surfaces, from the partial derivatives for Bezier patches).
+Mesh buildExactShape(const ShapeDesc& shape, float scale) {
   switch (shape.kind) {
     case ShapeKind::Plane:
       return makePlane(shape.size, scaled(shape.tessellation, scale, 1));
@@ -42,6 +42,14 @@ Mesh buildShape(const ShapeDesc& shape, float scale) {
   }
   assert(false && "custom shapes have no description to build from");
   return {};
+}
+
+}  // namespace
+
+Mesh buildShape(const ShapeDesc& shape, float scale) {
+  Mesh mesh = buildExactShape(shape, scale);
+  if (shape.creaseAngleDegrees >= 0.0f) computeCreaseNormals(mesh, shape.creaseAngleDegrees);
+  return mesh;
 }
 
 const char* shapeKindName(ShapeKind kind) {

@@ -22,6 +22,10 @@ struct ShapeDesc {
   // icosphere subdivision level, torus major segments (minor = major / 2),
   // teapot quads per patch side. Boxes are exact and ignore it.
   uint32_t tessellation = 16;
+  // Negative: keep the shape's exact normals. 0..180: replace them with
+  // area-weighted averages, split wherever faces meet at more than this angle
+  // (0 facets everything, 180 smooths everything, a box's edges are 90).
+  float creaseAngleDegrees = -1.0f;
 };
 
 // Builds the mesh at `scale` times the base tessellation (segments per side
