@@ -7,8 +7,6 @@
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUv;
-layout(location = 3) in vec4 inTangent;
 
 layout(location = 0) out vec3 outPosition;  // eye space
 layout(location = 1) out vec3 outNormal;    // eye space, not normalised
