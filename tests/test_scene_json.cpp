@@ -92,7 +92,8 @@ constexpr const char* kFullScene = R"({
              {"type": "directional", "direction": [0, -1, 0], "intensity": 0.5}],
   "materials": {
     "red": {"ka": [0.1, 0, 0], "kd": [0.8, 0.1, 0.1], "ks": 0.4, "shininess": 12},
-    "dark wood": {"kd": 0.3}
+    "dark wood": {"kd": 0.3},
+    "glass": {"reflectivity": 0.1, "transparency": 0.9, "ior": 1.33, "emissive": [0, 0.1, 0]}
   },
   "objects": [
     {"name": "floor", "shape": "plane", "size": 8, "tessellation": 4, "material": "dark wood"},
@@ -101,7 +102,7 @@ constexpr const char* kFullScene = R"({
     {"name": "gem", "shape": "icosphere", "radius": 2, "tessellation": 1,
      "material": {"ka": 0.2, "kd": [0, 0.5, 1], "ks": [1, 1, 0], "shininess": 7}},
     {"name": "ring", "shape": "torus", "major_radius": 2, "minor_radius": 0.5, "tessellation": 12},
-    {"name": "pot", "shape": "teapot", "tessellation": 3}
+    {"name": "pot", "shape": "teapot", "tessellation": 3, "material": "glass"}
   ]
 })";
 
@@ -150,6 +151,13 @@ TEST(SceneJson, FullSceneMaterialsByNameAndInline) {
   EXPECT_TRUE(vec3Near(gem.ks, {1, 1, 0}));
   EXPECT_FLOAT_EQ(gem.shininess, 7.0f);
   EXPECT_TRUE(vec3Near(objectNamed(scene, "crate").material.kd, Material{}.kd));
+  const Material& glass = objectNamed(scene, "pot").material;
+  EXPECT_FLOAT_EQ(glass.reflectivity, 0.1f);
+  EXPECT_FLOAT_EQ(glass.transparency, 0.9f);
+  EXPECT_FLOAT_EQ(glass.ior, 1.33f);
+  EXPECT_TRUE(vec3Near(glass.emissive, {0, 0.1f, 0}));
+  EXPECT_FLOAT_EQ(red.reflectivity, 0.0f);
+  EXPECT_FLOAT_EQ(red.ior, Material{}.ior);
 }
 
 TEST(SceneJson, FullSceneShapes) {
@@ -438,6 +446,9 @@ const ErrorCase kErrorCases[] = {
    {"materials.shiny.shininess: -1 is negative, expected a number >= 0"}},
   {"MaterialNameWithSpaceIsQuotedInPath", noObjects(R"("materials": {"dark wood": {"kd": true}})"),
    {R"(materials["dark wood"].kd: expected a number or an array of 3 numbers, got true)"}},
+  {"ReflectivityAboveOne", noObjects(R"("materials": {"m": {"reflectivity": 1.5}})"),
+   {"materials.m.reflectivity: value 1.5 is outside 0..1, expected a fraction from 0 to 1"}},
+  {"ZeroIor", noObjects(R"("materials": {"m": {"ior": 0}})"), {"materials.m.ior"}},
   {"NegativeAmbient", noObjects(R"("ambient": [-1, 0, 0])"), {"ambient[0]: -1 is negative"}},
   {"GroupWithoutChildren", oneObject(R"("name": "empty")"),
    {"scene.json: objects[0]: a group (an object without \"shape\") with no children"}},

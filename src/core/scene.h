@@ -41,12 +41,18 @@ struct Light {
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // f_att = 1 / (a + b d + c d^2)
 };
 
-// The Phong material: I = Ia ka + sum f_att Ip [kd (N.L) + ks (R.V)^n].
+// The Phong material: I = Ia ka + sum f_att Ip [kd (N.L) + ks (R.V)^n], plus the
+// terms the ray tracer and environment mapping add: a mirror fraction, a
+// transmitted fraction with its index of refraction, and emitted light.
 struct Material {
   glm::vec3 ka{0.1f};
   glm::vec3 kd{0.7f};
   glm::vec3 ks{0.3f};
   float shininess = 32.0f;
+  float reflectivity = 0.0f;  // kr: fraction of the reflected ray's colour added, 0..1
+  float transparency = 0.0f;  // kt: fraction of the refracted ray's colour added, 0..1
+  float ior = 1.5f;           // index of refraction of the inside; the outside is 1 (air)
+  glm::vec3 emissive{0.0f};   // added unlit
 };
 
 struct Object {

@@ -37,7 +37,10 @@
 //             light travels (non-zero). "intensity" Ip: [r, g, b] or a number, default 1.
 // materials   name -> {"ka", "kd", "ks": [r, g, b] or a number >= 0, "shininess": n >= 0},
 //             the Phong terms of I = Ia ka + sum f_att Ip [kd (N.L) + ks (R.V)^n];
-//             defaults ka 0.1, kd 0.7, ks 0.3, shininess 32.
+//             defaults ka 0.1, kd 0.7, ks 0.3, shininess 32. Also "reflectivity" kr and
+//             "transparency" kt (0..1, default 0: the mirror and transmitted fractions the
+//             ray tracer and environment mapping add), "ior" (> 0, default 1.5: the inside's
+//             index of refraction, the outside being air) and "emissive" (colour, default 0).
 // objects     required, may be empty. Each object has "name" (default: its JSON path),
 //             "shape", "material" (a name from "materials" or an inline material object;
 //             default the material defaults), "transform" and "children". An object
@@ -186,13 +189,25 @@ std::vector<Light> parseLights(const Field& field) {
   return lights;
 }
 
+float unitInterval(const Field& field) {
+  float value = field.number();
+  if (value < 0.0f || value > 1.0f)
+    field.fail("value " + formatNumber(value) + " is outside 0..1", "a fraction from 0 to 1");
+  return value;
+}
+
 Material parseMaterial(const Field& field) {
-  field.expectObject({"ka", "kd", "ks", "shininess"});
+  field.expectObject(
+      {"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "emissive"});
   Material material;
   if (auto f = field.optional("ka")) material.ka = f->colour();
   if (auto f = field.optional("kd")) material.kd = f->colour();
   if (auto f = field.optional("ks")) material.ks = f->colour();
   if (auto f = field.optional("shininess")) material.shininess = f->nonNegative();
+  if (auto f = field.optional("reflectivity")) material.reflectivity = unitInterval(*f);
+  if (auto f = field.optional("transparency")) material.transparency = unitInterval(*f);
+  if (auto f = field.optional("ior")) material.ior = f->positive();
+  if (auto f = field.optional("emissive")) material.emissive = f->colour();
   return material;
 }
 
