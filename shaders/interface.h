@@ -19,6 +19,13 @@ using mat4 = glm::mat4;
 // Descriptor set 0
 #define BINDING_FRAME 0    // uniform buffer: FrameData
 #define BINDING_OBJECTS 1  // storage buffer: ObjectData[]
+#define BINDING_ENVIRONMENT 2  // combined image sampler: the environment cube map
+
+// Descriptor set 1, one per material: its textures (a 1x1 dummy when a slot
+// is empty, since lavapipe crashes on never-written descriptors)
+#define BINDING_DIFFUSE_MAP 0
+#define BINDING_NORMAL_MAP 1
+#define BINDING_HEIGHT_MAP 2
 
 // Specialization constant ids and the values of SHADING_MODEL. The number of
 // point and of directional lights are constants too: with them each kind of

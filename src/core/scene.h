@@ -41,6 +41,36 @@ struct Light {
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // f_att = 1 / (a + b d + c d^2)
 };
 
+// Texture sampling, per texture slot of a material (glTF samplers map here).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
+struct SamplerDesc {
+  TextureWrap wrapU = TextureWrap::Repeat;
+  TextureWrap wrapV = TextureWrap::Repeat;
+  TextureFilter filter = TextureFilter::Trilinear;
+  float maxAnisotropy = 8.0f;  // Anisotropic only: 2..16
+  auto operator<=>(const SamplerDesc&) const = default;
+};
+
+// A texture's texels as loaded or generated, before upload: 8-bit RGBA, row 0
+// at the top. Colour textures hold sRGB-encoded values (sampled through an
+// _SRGB format, so shaders see linear values); data textures (normal and
+// height maps) are linear.
+struct Texture {
+  std::string name;  // the file or generator it came from, for messages
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> rgba8;  // width * height * 4
+  bool srgb = true;
+};
+
+// A material's use of one texture: an index into Scene::textures (-1: none).
+struct TextureSlot {
+  int32_t texture = -1;
+  SamplerDesc sampler;
+  bool present() const { return texture >= 0; }
+};
+
 // The Phong material: I = Ia ka + sum f_att Ip [kd (N.L) + ks (R.V)^n], plus the
 // terms the ray tracer and environment mapping add: a mirror fraction, a
 // transmitted fraction with its index of refraction, and emitted light.
@@ -53,6 +83,10 @@ struct Material {
   float transparency = 0.0f;  // kt: fraction of the refracted ray's colour added, 0..1
   float ior = 1.5f;           // index of refraction of the inside; the outside is 1 (air)
   glm::vec3 emissive{0.0f};   // added unlit
+  TextureSlot diffuseMap;     // multiplies kd (and ka)
+  TextureSlot normalMap;      // tangent space, xyz = 2 * rgb - 1
+  TextureSlot heightMap;      // r = height; the normal is perturbed by its derivatives
+  float bumpScale = 1.0f;     // normal map xy scale / height map amplitude
 };
 
 struct Object {
@@ -71,6 +105,7 @@ struct Scene {
   std::vector<Mesh> meshes;       // what is drawn
   std::vector<ShapeDesc> shapes;  // parallel to meshes: how each was built (Custom: loaded)
   std::vector<Object> objects;
+  std::vector<Texture> textures;  // referenced by Material texture slots
 
   uint32_t addMesh(Mesh mesh);           // a custom mesh (kept as is when re-tessellating)
   uint32_t addShape(const ShapeDesc& shape);
