@@ -32,6 +32,9 @@ UseState stateOf(ImageUse use) {
     case ImageUse::ShaderRead:
       return {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    case ImageUse::Acquired:
+      // The layout change must follow the semaphore wait: same stage as the wait.
+      return {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_UNDEFINED};
     case ImageUse::Present:
       return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE,
               VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};

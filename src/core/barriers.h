@@ -13,6 +13,8 @@ enum class ImageUse {
   TransferDest,      // copied or blitted to
   ShaderRead,        // sampled by fragment shaders
   Present,           // handed to the presentation engine
+  Acquired,          // a swapchain image just acquired: contents discarded; the
+                     // acquire semaphore is waited on at the transfer stage
 };
 
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse before,

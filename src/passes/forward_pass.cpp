@@ -43,15 +43,29 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   fragment_ = loadShader(device, "forward.frag");
 }
 
+std::vector<std::string> ForwardPass::shaderNames() {
+  return {"forward.vert", "forward_flat.geom", "forward.frag"};
+}
+
+void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
+  VkDevice device = context_.device();
+  vertex_ = createShaderModule(device, spirv.at("forward.vert"));
+  flatGeometry_ = createShaderModule(device, spirv.at("forward_flat.geom"));
+  fragment_ = createShaderModule(device, spirv.at("forward.frag"));
+  pipelines_.clear();
+}
+
 void ForwardPass::prepare(LightLayout lights, uint32_t samples) {
-  for (int model = 0; model < kShadingModelCount; ++model) {
-    VariantKey key{ShadingModel(model), lights, samples};
+  auto add = [&](const VariantKey& key) {
     if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-  }
+  };
+  for (int model = 0; model < kShadingModelCount; ++model)
+    add({ShadingModel(model), lights, samples, false});
+  if (context_.features().fillModeNonSolid) add({ShadingModel::Unlit, lights, samples, true});
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples] = key;
+  const auto& [model, lights, samples, wireframe] = key;
   const AttachmentFormats& formats = formats_;
   struct {
     int32_t shadingModel;
@@ -109,7 +123,12 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{
       VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.polygonMode = wireframe ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
+  // Edges sit exactly on the filled surface: pull them towards the eye so
+  // the depth test keeps them (a constant plus a slope-scaled offset).
+  raster.depthBiasEnable = wireframe ? VK_TRUE : VK_FALSE;
+  raster.depthBiasConstantFactor = -1.0f;
+  raster.depthBiasSlopeFactor = -1.0f;
   raster.cullMode = VK_CULL_MODE_BACK_BIT;
   // The projection flips y for Vulkan; Vulkan's signed-area rule flips it back,
   // so triangles counter-clockwise in the course's y-up view stay front-facing.
@@ -122,7 +141,7 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
   depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  depth.depthCompareOp = wireframe ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_LESS;
   VkPipelineColorBlendAttachmentState blendAttachment{};
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
@@ -160,11 +179,25 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
                          VkDescriptorSet frameSet, const GpuScene& scene,
                          const VkViewport& viewport) const {
+  bindAndDraw(cmd, {model, scene.lights, samples, false}, frameSet, scene, viewport, nullptr);
+}
+
+void ForwardPass::recordWireframe(VkCommandBuffer cmd, uint32_t samples, VkDescriptorSet frameSet,
+                                  const GpuScene& scene, const VkViewport& viewport) const {
+  if (!context_.features().fillModeNonSolid) return;
+  const glm::vec4 lineColor{0.9f, 0.9f, 0.9f, 1.0f};  // unlit writes kd: the line colour
+  bindAndDraw(cmd, {ShadingModel::Unlit, scene.lights, samples, true}, frameSet, scene, viewport,
+              &lineColor);
+}
+
+void ForwardPass::bindAndDraw(VkCommandBuffer cmd, const VariantKey& key, VkDescriptorSet frameSet,
+                              const GpuScene& scene, const VkViewport& viewport,
+                              const glm::vec4* lineColor) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({model, scene.lights, samples});
+  auto pipeline = pipelines_.find(key);
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
@@ -174,10 +207,12 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t sampl
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
   for (const DrawItem& draw : scene.draws) {
+    gpu::DrawConstants constants = draw.constants;
+    if (lineColor) constants.kd = *lineColor;
     vkCmdPushConstants(cmd, layout_,
                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                            VK_SHADER_STAGE_FRAGMENT_BIT,
-                       0, sizeof(draw.constants), &draw.constants);
+                       0, sizeof(constants), &constants);
     vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
   }
 }

@@ -4,6 +4,8 @@
 // Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index buffers.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
+#include <string>
+#include <vector>
 #include <tuple>
 
 #include "core/context.h"
@@ -30,10 +32,22 @@ class ForwardPass {
   // Records inside an active dynamic-rendering scope; sets its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples, VkDescriptorSet frameSet,
               const GpuScene& scene, const VkViewport& viewport) const;
+  // Triangle edges over what record() drew (polygonMode LINE, depth-biased
+  // towards the eye); a no-op when the device lacks fillModeNonSolid.
+  void recordWireframe(VkCommandBuffer cmd, uint32_t samples, VkDescriptorSet frameSet,
+                       const GpuScene& scene, const VkViewport& viewport) const;
+
+  static std::vector<std::string> shaderNames();
+  // New SPIR-V by source name; drops every pipeline (prepare() rebuilds them).
+  void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:
-  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t>;  // model, lights, samples
+  // model, lights, samples, wireframe
+  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t, bool>;
   Pipeline createPipeline(const VariantKey& key) const;
+  void bindAndDraw(VkCommandBuffer cmd, const VariantKey& key, VkDescriptorSet frameSet,
+                   const GpuScene& scene, const VkViewport& viewport,
+                   const glm::vec4* lineColor) const;
 
   const Context& context_;
   AttachmentFormats formats_;

@@ -1,6 +1,7 @@
 #include "passes/renderer.h"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -19,7 +20,9 @@ double nowMs() {
   return std::chrono::duration<double, std::milli>(Clock::now().time_since_epoch()).count();
 }
 
-ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
+}  // namespace
+
+ImageRgba unpackHalfImage(const void* data, uint32_t width, uint32_t height) {
   ImageRgba image(width, height);
   const auto* texels = static_cast<const uint64_t*>(data);
   for (size_t p = 0; p < size_t(width) * height; ++p) {
@@ -28,8 +31,6 @@ ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
   }
   return image;
 }
-
-}  // namespace
 
 Renderer::Renderer(const Context& context)
     : context_(context), forward_(context, {kColorFormat, kDepthFormat}) {
@@ -111,6 +112,8 @@ void Renderer::ensureTarget(uint32_t width, uint32_t height, uint32_t samples) {
   if (target_.color && target_.color.desc().width == width &&
       target_.color.desc().height == height && target_.samples == samples)
     return;
+  // Frames in flight may still draw into the old images.
+  if (target_.color) context_.waitIdle();
   target_ = Target{};
   target_.samples = samples;
   ImageDesc color{kColorFormat, width, height};
@@ -129,7 +132,7 @@ void Renderer::ensureTarget(uint32_t width, uint32_t height, uint32_t samples) {
   }
 }
 
-void Renderer::retire(Frame& frame, RenderStats& stats, double& lastCompletion) {
+void Renderer::retire(Frame& frame, RenderStats& stats) {
   if (!frame.pending) return;
   VkFence fence = frame.fence;
   VK_CHECK(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
@@ -140,8 +143,8 @@ void Renderer::retire(Frame& frame, RenderStats& stats, double& lastCompletion) 
                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   double period = context_.properties().limits.timestampPeriod;  // ns per tick
   stats.deviceMs.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
-  stats.wallMs.push_back(completion - lastCompletion);
-  lastCompletion = completion;
+  stats.wallMs.push_back(completion - lastCompletion_);
+  lastCompletion_ = completion;
   frame.pending = false;
 }
 
@@ -186,9 +189,40 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
   vkCmdBeginRendering(cmd, &rendering);
 }
 
-void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                           const RenderSettings& settings, const Buffer* readback) {
-  VkDevice device = context_.device();
+void Renderer::prepare(const GpuScene& scene, const RenderSettings& settings) {
+  uint32_t maxSize = context_.properties().limits.maxImageDimension2D;
+  if (settings.width == 0 || settings.height == 0 || settings.width > maxSize ||
+      settings.height > maxSize)
+    throw InputError("size " + std::to_string(settings.width) + "x" +
+                     std::to_string(settings.height) + ": width and height must be 1.." +
+                     std::to_string(maxSize));
+  if (settings.msaaSamples != 1 && settings.msaaSamples != 4)
+    throw InputError("msaa " + std::to_string(settings.msaaSamples) + ": expected 1 or 4");
+  if (settings.splitModels.size() > settings.width)
+    throw InputError("split screen: more views than pixel columns");
+  forward_.prepare(scene.lights, settings.msaaSamples);
+  ensureTarget(settings.width, settings.height, settings.msaaSamples);
+}
+
+void Renderer::waitForFrame(RenderStats& stats) {
+  retire(frames_[frameIndex_ % kFramesInFlight], stats);
+}
+
+VkCommandBuffer Renderer::beginFrame() {
+  Frame& frame = frames_[frameIndex_ % kFramesInFlight];
+  assert(!frame.pending && "waitForFrame() first");
+  VK_CHECK(vkResetCommandPool(context_.device(), frame.pool, 0));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(frame.cmd, &begin));
+  return frame.cmd;
+}
+
+void Renderer::recordScene(const GpuScene& scene, const Scene& source,
+                           const RenderSettings& settings) {
+  Frame& frame = frames_[frameIndex_ % kFramesInFlight];
+  prepare(scene, settings);
+  ensureObjectCapacity(frame, uint32_t(source.objects.size()));
   uint32_t width = settings.width, height = settings.height;
   glm::mat4 view = source.camera.viewMatrix();
   float viewAspect = float(width) / float(std::max<size_t>(1, settings.splitModels.size())) /
@@ -199,11 +233,7 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
 
-  VK_CHECK(vkResetCommandPool(device, frame.pool, 0));
   VkCommandBuffer cmd = frame.cmd;
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
   vkCmdResetQueryPool(cmd, frame.timestamps, 0, 2);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, frame.timestamps, 0);
 
@@ -217,68 +247,86 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
     float right = std::floor(columnWidth * float(i + 1));
     VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
     forward_.record(cmd, models[i], target_.samples, frame.set, scene, viewport);
+    if (settings.wireframe)
+      forward_.recordWireframe(cmd, target_.samples, frame.set, scene, viewport);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
+}
 
-  if (readback) {
-    imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::ColorAttachment,
-                 ImageUse::TransferSource);
-    target_.colorUse = ImageUse::TransferSource;
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {width, height, 1};
-    vkCmdCopyImageToBuffer(cmd, target_.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           readback->get(), 1, &region);
-    transferToHostBarrier(cmd);
-  }
-  VK_CHECK(vkEndCommandBuffer(cmd));
+void Renderer::recordReadback(const Buffer& readback) {
+  VkCommandBuffer cmd = commandBuffer();
+  const ImageDesc& desc = target_.color.desc();
+  assert(readback.size() >= VkDeviceSize(desc.width) * desc.height * 8);
+  imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, target_.colorUse,
+               ImageUse::TransferSource);
+  target_.colorUse = ImageUse::TransferSource;
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {desc.width, desc.height, 1};
+  vkCmdCopyImageToBuffer(cmd, target_.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         readback.get(), 1, &region);
+  transferToHostBarrier(cmd);
+}
 
+void Renderer::submitFrame(const FrameSync& sync) {
+  Frame& frame = frames_[frameIndex_ % kFramesInFlight];
+  VK_CHECK(vkEndCommandBuffer(frame.cmd));
   VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-  cmdInfo.commandBuffer = cmd;
+  cmdInfo.commandBuffer = frame.cmd;
+  VkSemaphoreSubmitInfo waitInfo{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+  waitInfo.semaphore = sync.wait;
+  waitInfo.stageMask = sync.waitStage;
+  VkSemaphoreSubmitInfo signalInfo{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+  signalInfo.semaphore = sync.signal;
+  signalInfo.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
   VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.waitSemaphoreInfoCount = sync.wait ? 1 : 0;
+  submit.pWaitSemaphoreInfos = &waitInfo;
   submit.commandBufferInfoCount = 1;
   submit.pCommandBufferInfos = &cmdInfo;
+  submit.signalSemaphoreInfoCount = sync.signal ? 1 : 0;
+  submit.pSignalSemaphoreInfos = &signalInfo;
   VkFence fence = frame.fence;
-  VK_CHECK(vkResetFences(device, 1, &fence));
+  VK_CHECK(vkResetFences(context_.device(), 1, &fence));
   VK_CHECK(vkQueueSubmit2(context_.queue(), 1, &submit, fence));
   frame.pending = true;
+  ++frameIndex_;
+}
+
+void Renderer::finishFrames(RenderStats& stats) {
+  // Oldest first, so the per-frame timings stay in submission order.
+  for (uint32_t i = 0; i < kFramesInFlight; ++i)
+    retire(frames_[(frameIndex_ + i) % kFramesInFlight], stats);
+}
+
+std::vector<std::string> Renderer::shaderNames() { return ForwardPass::shaderNames(); }
+
+void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
+  context_.waitIdle();  // pending frames use the old pipelines
+  forward_.reloadShaders(spirv);
 }
 
 RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& settings) {
-  uint32_t maxSize = context_.properties().limits.maxImageDimension2D;
-  if (settings.width == 0 || settings.height == 0 || settings.width > maxSize ||
-      settings.height > maxSize)
-    throw InputError("size " + std::to_string(settings.width) + "x" +
-                     std::to_string(settings.height) + ": width and height must be 1.." +
-                     std::to_string(maxSize));
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
-  if (settings.msaaSamples != 1 && settings.msaaSamples != 4)
-    throw InputError("msaa " + std::to_string(settings.msaaSamples) + ": expected 1 or 4");
-  if (settings.splitModels.size() > settings.width)
-    throw InputError("split screen: more views than pixel columns");
-
   GpuScene gpuScene = uploadScene(context_, scene);
-  forward_.prepare(gpuScene.lights, settings.msaaSamples);
-  ensureTarget(settings.width, settings.height, settings.msaaSamples);
+  prepare(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 
   RenderResult result;
   result.stats.triangles = gpuScene.triangles;
   result.stats.drawCalls = uint32_t(gpuScene.draws.size());
-  double lastCompletion = nowMs();
+  lastCompletion_ = nowMs();
   for (uint32_t i = 0; i < settings.frames; ++i) {
-    Frame& frame = frames_[i % kFramesInFlight];
-    retire(frame, result.stats, lastCompletion);
-    ensureObjectCapacity(frame, uint32_t(scene.objects.size()));
-    bool last = i + 1 == settings.frames;
-    recordFrame(frame, gpuScene, scene, settings, last ? &readback : nullptr);
+    waitForFrame(result.stats);
+    beginFrame();
+    recordScene(gpuScene, scene, settings);
+    if (i + 1 == settings.frames) recordReadback(readback);
+    submitFrame();
   }
-  // Retire in submission order so the per-frame timings stay in order.
-  for (uint32_t i = 0; i < kFramesInFlight; ++i)
-    retire(frames_[(settings.frames + i) % kFramesInFlight], result.stats, lastCompletion);
-  result.image = unpackHalfPixels(readback.mapped(), settings.width, settings.height);
+  finishFrames(result.stats);
+  result.image = unpackHalfImage(readback.mapped(), settings.width, settings.height);
   return result;
 }
 

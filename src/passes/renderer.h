@@ -3,6 +3,8 @@
 // owns the frames in flight and the render target and runs the passes.
 // Headless capture is one call: renderToImage(scene, settings).
 #include <array>
+#include <map>
+#include <string>
 #include <memory>
 #include <vector>
 
@@ -27,6 +29,7 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  bool wireframe = false;  // triangle edges drawn over the shaded image (needs fillModeNonSolid)
 };
 
 struct RenderStats {
@@ -41,6 +44,16 @@ struct RenderResult {
   RenderStats stats;
 };
 
+// Semaphores a frame's submission waits on and signals (a swapchain's), if any.
+struct FrameSync {
+  VkSemaphore wait = VK_NULL_HANDLE;
+  VkPipelineStageFlags2 waitStage = VK_PIPELINE_STAGE_2_NONE;
+  VkSemaphore signal = VK_NULL_HANDLE;
+};
+
+// The colour target's RGBA16F texels as read back by recordReadback.
+ImageRgba unpackHalfImage(const void* data, uint32_t width, uint32_t height);
+
 class Renderer {
  public:
   static constexpr uint32_t kFramesInFlight = 2;
@@ -54,6 +67,34 @@ class Renderer {
 
   // Throws InputError for an impossible size.
   RenderResult renderToImage(const Scene& scene, const RenderSettings& settings);
+
+  // The steps renderToImage is made of, for front ends that own the loop (the
+  // viewer): waitForFrame, beginFrame, recordScene, optional recordReadback
+  // and commands of their own on commandBuffer(), submitFrame.
+  // Throws InputError for impossible settings; builds pipelines and target.
+  void prepare(const GpuScene& scene, const RenderSettings& settings);
+  // Waits for the oldest frame in flight and appends its timings to `stats`.
+  void waitForFrame(RenderStats& stats);
+  VkCommandBuffer beginFrame();
+  void recordScene(const GpuScene& scene, const Scene& source, const RenderSettings& settings);
+  // Copies the colour target into `readback` (width * height * 8 bytes, host-visible).
+  void recordReadback(const Buffer& readback);
+  void submitFrame(const FrameSync& sync = {});
+  // Waits for every frame in flight, appending their timings in submission order.
+  void finishFrames(RenderStats& stats);
+  VkCommandBuffer commandBuffer() const { return frames_[frameIndex_ % kFramesInFlight].cmd; }
+  uint32_t frameSlot() const { return frameIndex_ % kFramesInFlight; }
+
+  // What recordScene drew, for a step that copies it on (presentation); a
+  // step that changes its layout records the new use.
+  const Image& colorTarget() const { return target_.color; }
+  ImageUse& colorTargetUse() { return target_.colorUse; }
+
+  // Every shader the passes use, by source name (e.g. "forward.frag").
+  static std::vector<std::string> shaderNames();
+  // Replaces the passes' shaders (SPIR-V by source name; every name of
+  // shaderNames() present) and rebuilds their pipelines. Waits for the device.
+  void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:
   struct Frame {
@@ -82,14 +123,14 @@ class Renderer {
   void ensureTarget(uint32_t width, uint32_t height, uint32_t samples);
   void beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width, uint32_t height);
   // Waits for the frame's previous submission and records its timings.
-  void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
-  void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                   const RenderSettings& settings, const Buffer* readback);
+  void retire(Frame& frame, RenderStats& stats);
 
   const Context& context_;
   ForwardPass forward_;
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;
+  uint64_t frameIndex_ = 0;  // frames begun; the slot is frameIndex_ % kFramesInFlight
+  double lastCompletion_ = 0.0;
   Target target_;
 };
 

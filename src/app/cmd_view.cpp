@@ -1,0 +1,66 @@
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "core/scene_loader.h"
+#include "view/viewer.h"
+
+#ifndef SHADELAB_SHADER_SOURCE_DIR
+#define SHADELAB_SHADER_SOURCE_DIR "shaders"
+#endif
+
+namespace shadelab {
+namespace {
+
+struct ViewOptions {
+  std::string scene;
+  std::string size = "1280x720";
+  std::string present = "fifo";
+  std::string script;
+};
+
+int runView(const ViewOptions& options, const GlobalOptions& global) {
+  // Every input is checked before a window opens.
+  Size size = parseSize(options.size, "--size");
+  ViewerOptions viewer;
+  viewer.presentMode = parsePresentMode(options.present);
+  if (!options.script.empty()) viewer.script = parseViewerScript(options.script, Viewer::keyNames());
+  const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
+  viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
+  Scene scene = loadScene(options.scene);
+
+  Window window("shadelab view " + scene.name, size.width, size.height);
+  ContextOptions contextOptions;
+  contextOptions.validation = global.validate;
+  contextOptions.deviceName = global.device;
+  contextOptions.instanceExtensions = Window::requiredInstanceExtensions();
+  contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+  auto context = std::make_unique<Context>(contextOptions);
+  {
+    Viewer view(window, *context, std::move(scene), viewer);
+    view.run();
+  }
+  return finishWithValidation(*context, 0);
+}
+
+}  // namespace
+
+CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
+  auto options = std::make_shared<ViewOptions>();
+  CLI::App* command =
+      app.add_subcommand("view", "Interactive window: orbit the scene, toggle shading live (H: keys)");
+  command->add_option("scene", options->scene,
+                      "Built-in scene name or scene file (default: the built-in default scene)");
+  command->add_option("--size", options->size, "Initial window size WIDTHxHEIGHT")
+      ->capture_default_str();
+  command->add_option("--present", options->present, "Present mode: fifo (vsync), mailbox, immediate")
+      ->capture_default_str();
+  command->add_option("--script", options->script,
+                      "Run the steps of FILE (key, frames, drag, scroll, resize, minimize, "
+                      "restore, screenshot, memory, quit) instead of waiting for input");
+  return [options, &global] { return runView(*options, global); };
+}
+
+}  // namespace shadelab

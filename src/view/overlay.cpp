@@ -1,0 +1,183 @@
+#include "view/overlay.h"
+
+#include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
+
+#include "core/image.h"
+#include "core/vk_check.h"
+
+namespace shadelab {
+namespace {
+
+void checkImguiVulkan(VkResult result) { VK_CHECK(result); }
+
+bool isSrgb(VkFormat format) {
+  return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_R8G8B8A8_SRGB;
+}
+
+// ImGui's colours are sRGB-encoded values; an _SRGB attachment encodes what
+// the shader writes, so without decoding them first they come out washed out.
+void decodeStyleColours() {
+  ImGuiStyle& style = ImGui::GetStyle();
+  for (ImVec4& colour : style.Colors) {
+    colour.x = srgbToLinear(colour.x);
+    colour.y = srgbToLinear(colour.y);
+    colour.z = srgbToLinear(colour.z);
+  }
+}
+
+VkRenderPass createLoadRenderPass(VkDevice device, VkFormat format) {
+  VkAttachmentDescription attachment{};
+  attachment.format = format;
+  attachment.samples = VK_SAMPLE_COUNT_1_BIT;
+  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // the scene is already there
+  attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachment.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  attachment.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference reference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &reference;
+  // Before and after: the barriers of present_pass (attachment use on both sides).
+  VkSubpassDependency dependencies[2] = {};
+  dependencies[0] = {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, 0};
+  dependencies[1] = {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, 0};
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 1;
+  info.pAttachments = &attachment;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 2;
+  info.pDependencies = dependencies;
+  VkRenderPass renderPass = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateRenderPass(device, &info, nullptr, &renderPass));
+  return renderPass;
+}
+
+}  // namespace
+
+Overlay::Overlay(const Context& context, VkFormat swapchainFormat, uint32_t minImageCount,
+                 uint32_t imageCount)
+    : context_(context) {
+  VkDevice device = context.device();
+  renderPass_ = createLoadRenderPass(device, swapchainFormat);
+  // The backend allocates one set, for its font texture.
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+  poolInfo.maxSets = 4;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &size;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool));
+  descriptorPool_ = DescriptorPool(device, pool);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini written into the user's folder
+  io.LogFilename = nullptr;
+  ImGui::StyleColorsDark();
+  if (isSrgb(swapchainFormat)) decodeStyleColours();
+
+  ImGui_ImplVulkan_InitInfo info{};
+  info.Instance = context.instance();
+  info.PhysicalDevice = context.physicalDevice();
+  info.Device = device;
+  info.QueueFamily = context.queueFamily();
+  info.Queue = context.queue();
+  info.DescriptorPool = pool;
+  info.MinImageCount = minImageCount;
+  info.ImageCount = std::max(imageCount, minImageCount);
+  info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+  info.CheckVkResultFn = checkImguiVulkan;
+  ImGui_ImplVulkan_Init(&info, renderPass_);
+  context.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+  ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+Overlay::~Overlay() {
+  context_.waitIdle();
+  ImGui_ImplVulkan_Shutdown();
+  ImGui::DestroyContext();
+  destroyFramebuffers();
+  vkDestroyRenderPass(context_.device(), renderPass_, nullptr);
+}
+
+void Overlay::destroyFramebuffers() {
+  for (VkFramebuffer framebuffer : framebuffers_)
+    vkDestroyFramebuffer(context_.device(), framebuffer, nullptr);
+  framebuffers_.clear();
+}
+
+void Overlay::setTargets(const std::vector<VkImageView>& views, VkExtent2D extent,
+                         uint32_t minImageCount) {
+  destroyFramebuffers();
+  extent_ = extent;
+  ImGui_ImplVulkan_SetMinImageCount(minImageCount);
+  for (VkImageView view : views) {
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = renderPass_;
+    info.attachmentCount = 1;
+    info.pAttachments = &view;
+    info.width = extent.width;
+    info.height = extent.height;
+    info.layers = 1;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateFramebuffer(context_.device(), &info, nullptr, &framebuffer));
+    framebuffers_.push_back(framebuffer);
+  }
+}
+
+void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText& text,
+                     float deltaSeconds) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(float(extent_.width), float(extent_.height));
+  io.DeltaTime = deltaSeconds > 0.0f ? deltaSeconds : 1.0f / 60.0f;
+  ImGui_ImplVulkan_NewFrame();
+  ImGui::NewFrame();
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  ImGui::SetNextWindowPos(ImVec2(8, 8));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  ImGui::Begin("status", nullptr, flags);
+  for (const std::string& line : text.status) ImGui::TextUnformatted(line.c_str());
+  if (!text.message.empty()) {
+    ImVec4 colour = text.messageIsError ? ImVec4(1.0f, 0.25f, 0.2f, 1.0f)
+                                        : ImVec4(1.0f, 0.85f, 0.3f, 1.0f);
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::PushTextWrapPos(float(extent_.width) * 0.9f);
+    ImGui::TextUnformatted(text.message.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+  }
+  ImGui::End();
+  if (!text.help.empty()) {
+    ImGui::SetNextWindowPos(ImVec2(float(extent_.width) - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("help", nullptr, flags);
+    for (const std::string& line : text.help) ImGui::TextUnformatted(line.c_str());
+    ImGui::End();
+  }
+  ImGui::Render();
+
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = renderPass_;
+  begin.framebuffer = framebuffers_[imageIndex];
+  begin.renderArea = {{0, 0}, extent_};
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+  vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace shadelab

@@ -1,0 +1,331 @@
+#include "view/viewer.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "core/errors.h"
+#include "core/image.h"
+#include "core/stats.h"
+#include "core/vk_check.h"
+#include "passes/present_pass.h"
+
+namespace shadelab {
+namespace {
+
+constexpr size_t kTimingWindow = 120;
+
+double nowSeconds() {
+  using Clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
+void pushBounded(std::deque<double>& samples, const std::vector<double>& values) {
+  for (double value : values) {
+    samples.push_back(value);
+    if (samples.size() > kTimingWindow) samples.pop_front();
+  }
+}
+
+long residentKilobytes() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "VmRSS:") {
+      long kilobytes = 0;
+      status >> kilobytes;
+      return kilobytes;
+    }
+    status.ignore(4096, '\n');
+  }
+  return -1;
+}
+
+// A swapchain image as read back: 4 bytes per pixel, BGRA or RGBA.
+ImageU8 toImage(const Buffer& buffer, VkExtent2D extent, VkFormat format) {
+  ImageU8 image(extent.width, extent.height);
+  const auto* bytes = static_cast<const uint8_t*>(buffer.mapped());
+  bool bgra = format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_B8G8R8A8_UNORM;
+  for (size_t p = 0; p < size_t(extent.width) * extent.height; ++p) {
+    const uint8_t* texel = bytes + p * 4;
+    image.pixels[p * 4 + 0] = bgra ? texel[2] : texel[0];
+    image.pixels[p * 4 + 1] = texel[1];
+    image.pixels[p * 4 + 2] = bgra ? texel[0] : texel[2];
+    image.pixels[p * 4 + 3] = 255;  // presented opaque
+  }
+  return image;
+}
+
+ImageU8 crop(const ImageU8& image, uint32_t left, uint32_t width) {
+  ImageU8 part(width, image.height);
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < width; ++x) part.set(x, y, image.at(left + x, y));
+  return part;
+}
+
+Semaphore createSemaphore(VkDevice device) {
+  VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+  VkSemaphore semaphore = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSemaphore(device, &info, nullptr, &semaphore));
+  return Semaphore(device, semaphore);
+}
+
+}  // namespace
+
+Viewer::Viewer(Window& window, const Context& context, Scene scene, const ViewerOptions& options)
+    : window_(window),
+      context_(context),
+      scene_(std::move(scene)),
+      options_(options),
+      surface_(context.instance(), window.createSurface(context.instance())),
+      renderer_(context),
+      gpuScene_(uploadScene(context, scene_)),
+      swapchain_(context, surface_.get(), options.presentMode),
+      camera_(scene_.camera) {
+  for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
+  glm::ivec2 size = window.framebufferSize();
+  swapchain_.recreate({uint32_t(size.x), uint32_t(size.y)});
+  overlay_ = std::make_unique<Overlay>(context, swapchain_.format(), swapchain_.minImageCount(),
+                                       std::max(3u, swapchain_.imageCount()));
+  swapchainStale_ = true;
+  lastFrameTime_ = nowSeconds();
+}
+
+Viewer::~Viewer() { context_.waitIdle(); }
+
+void Viewer::say(const std::string& message, bool error) {
+  message_ = message;
+  messageIsError_ = error;
+  std::printf("view: %s\n", message.c_str());
+  std::fflush(stdout);
+}
+
+void Viewer::run() {
+  while (!quit_) {
+    if (options_.script && !advanceScript()) break;
+    if (!options_.script && minimized_)
+      window_.waitEvents(0.1);  // nothing to draw: sleep until something happens
+    else
+      window_.pollEvents();
+    handleEvents();
+    if (window_.closeRequested()) break;
+    glm::ivec2 size = window_.framebufferSize();
+    bool wasMinimized = minimized_;
+    minimized_ = minimizedByScript_ || window_.iconified() || size.x == 0 || size.y == 0;
+    if (wasMinimized && !minimized_) swapchainStale_ = true;  // restored: rebuild for the new state
+    if (!minimized_) drawFrame();
+    if (framesToRun_ > 0) --framesToRun_;
+  }
+  RenderStats stats;
+  renderer_.finishFrames(stats);
+  for (SlotWork& work : slotWork_) finishSlotWork(work);
+  std::vector<double> device(deviceMs_.begin(), deviceMs_.end());
+  std::vector<double> wall(wallMs_.begin(), wallMs_.end());
+  std::printf("view: %llu frames; median of the last %zu: %.3f ms device (scene), %.3f ms wall\n",
+              static_cast<unsigned long long>(framesDrawn_), device.size(), median(device),
+              median(wall));
+}
+
+bool Viewer::advanceScript() {
+  const std::vector<ScriptStep>& steps = *options_.script;
+  while (framesToRun_ == 0 && !quit_) {
+    if (scriptPosition_ >= steps.size()) return false;
+    const ScriptStep& step = steps[scriptPosition_++];
+    scriptLine_ = step.line;
+    runStep(step);
+  }
+  return !quit_;
+}
+
+void Viewer::runStep(const ScriptStep& step) {
+  switch (step.kind) {
+    case ScriptStep::Kind::Key:
+      window_.events().push_back({InputEvent::Kind::Key, step.key});
+      break;
+    case ScriptStep::Kind::Frames:
+      framesToRun_ = step.count;
+      break;
+    case ScriptStep::Kind::Drag:
+      window_.injectButton(step.button, true, step.from);
+      window_.injectMove(step.to);
+      window_.injectButton(step.button, false, step.to);
+      break;
+    case ScriptStep::Kind::Scroll: {
+      InputEvent event{InputEvent::Kind::Scroll};
+      event.scroll = step.scroll;
+      window_.events().push_back(event);
+      break;
+    }
+    case ScriptStep::Kind::Resize: {
+      window_.setSize(step.width, step.height);
+      // The X server applies the size asynchronously; wait (bounded) for it.
+      double deadline = nowSeconds() + 2.0;
+      while (window_.framebufferSize() != glm::ivec2(step.width, step.height) &&
+             nowSeconds() < deadline)
+        window_.waitEvents(0.01);
+      swapchainStale_ = true;
+      break;
+    }
+    case ScriptStep::Kind::Minimize:
+      // Without a window manager (Xvfb) the X server ignores iconify
+      // requests, so the script also puts the viewer in its minimised state.
+      window_.iconify();
+      minimizedByScript_ = true;
+      break;
+    case ScriptStep::Kind::Restore:
+      window_.restore();
+      minimizedByScript_ = false;
+      break;
+    case ScriptStep::Kind::Screenshot:
+      if (minimizedByScript_)
+        throw InputError("script line " + std::to_string(step.line) +
+                         ": screenshot while minimised: nothing is presented (restore first)");
+      screenshotRequest_ = step.path;
+      framesToRun_ = 1;
+      break;
+    case ScriptStep::Kind::Memory:
+      std::printf("view: memory VmRSS %ld kB after %llu frames\n", residentKilobytes(),
+                  static_cast<unsigned long long>(framesDrawn_));
+      std::fflush(stdout);
+      break;
+    case ScriptStep::Kind::Quit:
+      quit_ = true;
+      break;
+  }
+}
+
+void Viewer::handleEvents() {
+  float viewHeight = float(window_.windowSize().y);
+  while (!window_.events().empty()) {
+    InputEvent event = window_.events().front();
+    window_.events().pop_front();
+    switch (event.kind) {
+      case InputEvent::Kind::Key:
+        handleKey(event.key);
+        break;
+      case InputEvent::Kind::ButtonDown:
+        dragging_ = event.button;
+        lastMouse_ = event.position;
+        break;
+      case InputEvent::Kind::ButtonUp:
+        dragging_.reset();
+        break;
+      case InputEvent::Kind::Move:
+        if (dragging_ == MouseButton::Left)
+          camera_.orbit(event.position - lastMouse_, viewHeight);
+        else if (dragging_)
+          camera_.pan(event.position - lastMouse_, viewHeight);
+        lastMouse_ = event.position;
+        break;
+      case InputEvent::Kind::Scroll:
+        camera_.zoom(event.scroll);
+        break;
+    }
+  }
+}
+
+void Viewer::recreateSwapchain() {
+  glm::ivec2 size = window_.framebufferSize();
+  if (!swapchain_.recreate({uint32_t(size.x), uint32_t(size.y)})) return;
+  overlay_->setTargets(swapchain_.views(), swapchain_.extent(), swapchain_.minImageCount());
+  swapchainStale_ = false;
+}
+
+void Viewer::drawFrame() {
+  glm::ivec2 size = window_.framebufferSize();
+  VkExtent2D current = swapchain_.extent();
+  if (swapchainStale_ || !swapchain_.valid() || int(current.width) != size.x ||
+      int(current.height) != size.y)
+    recreateSwapchain();
+  if (!swapchain_.valid() || swapchainStale_) return;
+
+  uint32_t slot = renderer_.frameSlot();
+  RenderStats stats;
+  renderer_.waitForFrame(stats);
+  pushBounded(deviceMs_, stats.deviceMs);
+  pushBounded(wallMs_, stats.wallMs);
+  finishSlotWork(slotWork_[slot]);
+
+  uint32_t imageIndex = 0;
+  SwapchainStatus status = swapchain_.acquire(imageAvailable_[slot], imageIndex);
+  if (status == SwapchainStatus::OutOfDate) {
+    swapchainStale_ = true;
+    return;
+  }
+  if (status == SwapchainStatus::Suboptimal) swapchainStale_ = true;  // draw this one, then rebuild
+
+  VkExtent2D extent = swapchain_.extent();
+  settings_.width = extent.width;
+  settings_.height = extent.height;
+  scene_.camera = camera_.camera();
+  VkCommandBuffer cmd = renderer_.beginFrame();
+  renderer_.recordScene(gpuScene_, scene_, settings_);
+
+  SlotWork& work = slotWork_[slot];
+  bool metricsDue = !settings_.splitModels.empty() &&
+                    (splitErrors_.empty() || framesDrawn_ % options_.metricsInterval == 0);
+  if (metricsDue) {
+    VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 8;
+    if (!work.metrics || work.metrics.size() < bytes)
+      work.metrics = Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
+    renderer_.recordReadback(work.metrics);
+    work.metricsPending = true;
+    work.metricsSettings = settings_;
+  }
+  VkImage image = swapchain_.image(imageIndex);
+  recordBlitToSwapchain(cmd, renderer_.colorTarget(), renderer_.colorTargetUse(), image, extent);
+  double now = nowSeconds();
+  if (overlayVisible_) overlay_->record(cmd, imageIndex, overlayText(), float(now - lastFrameTime_));
+  lastFrameTime_ = now;
+  const Buffer* screenshot = nullptr;
+  if (!screenshotRequest_.empty()) {
+    work.screenshot = Buffer(context_, VkDeviceSize(extent.width) * extent.height * 4,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
+    work.screenshotPath = std::exchange(screenshotRequest_, {});
+    work.screenshotExtent = extent;
+    screenshot = &work.screenshot;
+  }
+  recordPresentTransition(cmd, image, extent, screenshot);
+  renderer_.submitFrame(
+      {imageAvailable_[slot], VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, swapchain_.renderingDone(imageIndex)});
+  if (swapchain_.present(imageIndex) != SwapchainStatus::Ok) swapchainStale_ = true;
+  ++framesDrawn_;
+}
+
+void Viewer::finishSlotWork(SlotWork& work) {
+  if (!work.screenshotPath.empty()) {
+    writeImage(toImage(work.screenshot, work.screenshotExtent, swapchain_.format()),
+               work.screenshotPath);
+    say("wrote " + work.screenshotPath + " (" + std::to_string(work.screenshotExtent.width) + "x" +
+        std::to_string(work.screenshotExtent.height) + ", as presented)");
+    work.screenshotPath.clear();
+    work.screenshot = Buffer();
+  }
+  if (work.metricsPending) {
+    computeSplitErrors(work);
+    work.metricsPending = false;
+  }
+}
+
+// Each split-screen column against the Phong column: the same camera and
+// view, so the difference is the shading model's alone.
+void Viewer::computeSplitErrors(const SlotWork& work) {
+  const RenderSettings& used = work.metricsSettings;
+  ImageU8 frame = encodeSrgb8(unpackHalfImage(work.metrics.mapped(), used.width, used.height));
+  const std::vector<ShadingModel>& models = used.splitModels;
+  float columnWidth = float(used.width) / float(models.size());
+  auto column = [&](size_t i, uint32_t width) {
+    return crop(frame, uint32_t(std::floor(columnWidth * float(i))), width);
+  };
+  auto phong = std::find(models.begin(), models.end(), ShadingModel::Phong);
+  if (phong == models.end()) return;
+  size_t reference = size_t(phong - models.begin());
+  // Columns differ by at most one pixel in width: compare the common part.
+  uint32_t width = uint32_t(std::floor(columnWidth));
+  ImageU8 referenceImage = column(reference, width);
+  splitErrors_.clear();
+  for (size_t i = 0; i < models.size(); ++i)
+    if (i != reference) splitErrors_.push_back({models[i], compareImages(referenceImage, column(i, width))});
+}
+
+}  // namespace shadelab

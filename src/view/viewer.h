@@ -1,0 +1,119 @@
+#pragma once
+// The interactive viewer: a window showing the scene drawn by the same
+// Renderer as headless capture, blitted into the swapchain, with a text
+// overlay; keys toggle RenderSettings, the mouse moves the camera, and a
+// script can drive all of it (tests, README screenshots).
+#include <array>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/context.h"
+#include "core/gpu_scene.h"
+#include "core/metrics.h"
+#include "passes/renderer.h"
+#include "view/camera_controller.h"
+#include "view/overlay.h"
+#include "view/swapchain.h"
+#include "view/viewer_script.h"
+#include "view/window.h"
+
+namespace shadelab {
+
+struct ViewerOptions {
+  VkPresentModeKHR presentMode = VK_PRESENT_MODE_FIFO_KHR;
+  std::optional<std::vector<ScriptStep>> script;  // none: interactive
+  std::filesystem::path shaderDirectory;          // where R reloads GLSL from
+  uint32_t metricsInterval = 30;                  // frames between split-screen error readbacks
+};
+
+class Viewer;
+struct KeyBinding {
+  int key = 0;           // GLFW key code
+  std::string name;      // as typed in a script: "1", "C"
+  std::string help;
+  std::function<void(Viewer&)> action;
+};
+
+class Viewer {
+ public:
+  Viewer(Window& window, const Context& context, Scene scene, const ViewerOptions& options);
+  ~Viewer();
+  Viewer(const Viewer&) = delete;
+  Viewer& operator=(const Viewer&) = delete;
+
+  // Until the window closes or the script ends.
+  void run();
+  static const std::vector<KeyBinding>& keyBindings();
+  static std::vector<std::string> keyNames();
+
+ private:
+  // What a frame slot still has to do once its fence has signalled.
+  struct SlotWork {
+    Buffer screenshot;
+    std::string screenshotPath;
+    VkExtent2D screenshotExtent{};
+    Buffer metrics;
+    bool metricsPending = false;
+    RenderSettings metricsSettings;
+  };
+
+  bool advanceScript();
+  void runStep(const ScriptStep& step);
+  void handleEvents();
+  void handleKey(int key);
+  void drawFrame();
+  void recreateSwapchain();
+  void finishSlotWork(SlotWork& work);
+  void computeSplitErrors(const SlotWork& work);
+  OverlayText overlayText() const;
+  void say(const std::string& message, bool error = false);
+  void notAvailable(const std::string& feature);
+  void setModel(ShadingModel model);
+  void setTessellation(float scale);
+  void reloadShaders();
+  std::string nextScreenshotName() const;
+
+  Window& window_;
+  const Context& context_;
+  Scene scene_;
+  ViewerOptions options_;
+  Surface surface_;
+  Renderer renderer_;
+  GpuScene gpuScene_;
+  Swapchain swapchain_;
+  std::unique_ptr<Overlay> overlay_;
+  std::array<Semaphore, Renderer::kFramesInFlight> imageAvailable_;
+  std::array<SlotWork, Renderer::kFramesInFlight> slotWork_;
+  CameraController camera_;
+  RenderSettings settings_;
+
+  float tessellation_ = 1.0f;
+  bool overlayVisible_ = true;
+  bool helpVisible_ = false;
+  bool minimizedByScript_ = false;
+  bool minimized_ = false;
+  bool swapchainStale_ = true;
+  bool quit_ = false;
+  std::optional<MouseButton> dragging_;
+  glm::vec2 lastMouse_{0.0f};
+
+  std::deque<double> deviceMs_, wallMs_;  // the last 120 frames
+  uint64_t framesDrawn_ = 0;
+  std::vector<std::pair<ShadingModel, ImageDifference>> splitErrors_;
+  std::string message_;
+  bool messageIsError_ = false;
+  std::string screenshotRequest_;
+  double lastFrameTime_ = 0.0;
+
+  size_t scriptPosition_ = 0;
+  uint32_t framesToRun_ = 0;
+  int scriptLine_ = 0;
+};
+
+}  // namespace shadelab

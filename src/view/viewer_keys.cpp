@@ -1,0 +1,175 @@
+// The viewer's keys and what the overlay shows about them. A key whose
+// feature is not in this build says so; when the feature lands as a
+// RenderSettings field, its binding toggles that field like W does.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/glsl_compiler.h"
+#include "core/stats.h"
+#include "view/viewer.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace shadelab {
+namespace {
+
+std::string formatMs(double ms) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2f ms", ms);
+  return text;
+}
+
+std::string withThousands(uint64_t value) {
+  std::string digits = std::to_string(value);
+  for (int i = int(digits.size()) - 3; i > 0; i -= 3) digits.insert(size_t(i), ",");
+  return digits;
+}
+
+}  // namespace
+
+const std::vector<KeyBinding>& Viewer::keyBindings() {
+  auto modelKey = [](char name, ShadingModel model) {
+    return KeyBinding{name, std::string(1, name),
+                      "shading model: " + std::string(shadingModelName(model)),
+                      [model](Viewer& viewer) { viewer.setModel(model); }};
+  };
+  static const std::vector<KeyBinding> bindings = {
+      modelKey('1', ShadingModel::Flat),
+      modelKey('2', ShadingModel::Gouraud),
+      modelKey('3', ShadingModel::Phong),
+      modelKey('4', ShadingModel::BlinnPhong),
+      {'C', "C", "split screen: the four models side by side, errors against Phong",
+       [](Viewer& v) {
+         bool on = v.settings_.splitModels.empty();
+         v.settings_.splitModels.clear();
+         if (on)
+           v.settings_.splitModels = {ShadingModel::Flat, ShadingModel::Gouraud,
+                                      ShadingModel::Phong, ShadingModel::BlinnPhong};
+         v.splitErrors_.clear();
+         v.say(on ? "split screen on" : "split screen off");
+       }},
+      {'W', "W", "wireframe overlay",
+       [](Viewer& v) {
+         if (!v.context_.features().fillModeNonSolid)
+           return v.notAvailable("wireframe (the device lacks fillModeNonSolid)");
+         v.settings_.wireframe = !v.settings_.wireframe;
+         v.say(v.settings_.wireframe ? "wireframe on" : "wireframe off");
+       }},
+      {'T', "T", "tessellation x2", [](Viewer& v) { v.setTessellation(v.tessellation_ * 2.0f); }},
+      {'G', "G", "tessellation / 2", [](Viewer& v) { v.setTessellation(v.tessellation_ * 0.5f); }},
+      {'A', "A", "automatic tessellation (screen-space error bound)",
+       [](Viewer& v) { v.notAvailable("automatic tessellation"); }},
+      {'B', "B", "bump mapping", [](Viewer& v) { v.notAvailable("bump mapping"); }},
+      {'E', "E", "environment mapping", [](Viewer& v) { v.notAvailable("environment mapping"); }},
+      {'F', "F", "texture filter: nearest, bilinear, trilinear, anisotropic",
+       [](Viewer& v) { v.notAvailable("texture filtering"); }},
+      {'M', "M", "mip-level tint", [](Viewer& v) { v.notAvailable("mip-level tint"); }},
+      {'R', "R", "reload shaders from disk", [](Viewer& v) { v.reloadShaders(); }},
+      {'P', "P", "screenshot of the presented frame (PNG)",
+       [](Viewer& v) { v.screenshotRequest_ = v.nextScreenshotName(); }},
+      {'O', "O", "overlay on / off", [](Viewer& v) { v.overlayVisible_ = !v.overlayVisible_; }},
+      {'H', "H", "this help", [](Viewer& v) { v.helpVisible_ = !v.helpVisible_; }},
+  };
+  return bindings;
+}
+
+std::vector<std::string> Viewer::keyNames() {
+  std::vector<std::string> names;
+  for (const KeyBinding& binding : keyBindings()) names.push_back(binding.name);
+  return names;
+}
+
+void Viewer::handleKey(int key) {
+  if (key == GLFW_KEY_ESCAPE) {
+    quit_ = true;
+    return;
+  }
+  for (const KeyBinding& binding : keyBindings())
+    if (binding.key == key) return binding.action(*this);
+}
+
+void Viewer::setModel(ShadingModel model) {
+  settings_.shadingModel = model;
+  std::string name(shadingModelName(model));
+  say(settings_.splitModels.empty() ? name : name + " (split screen shows all models: C leaves it)");
+}
+
+void Viewer::notAvailable(const std::string& feature) {
+  say(feature + ": not available in this build");
+}
+
+void Viewer::setTessellation(float scale) {
+  float clamped = std::clamp(scale, 0.125f, 16.0f);
+  if (clamped == tessellation_) return say("tessellation already at its limit");
+  tessellation_ = clamped;
+  scene_.retessellate(tessellation_);
+  context_.waitIdle();  // frames in flight still read the old buffers
+  gpuScene_ = uploadScene(context_, scene_);
+  char text[96];
+  std::snprintf(text, sizeof(text), "tessellation x%g: %s triangles", double(tessellation_),
+                withThousands(gpuScene_.triangles).c_str());
+  say(text);
+}
+
+void Viewer::reloadShaders() {
+  std::map<std::string, std::vector<uint32_t>> spirv;
+  for (const std::string& name : Renderer::shaderNames()) {
+    GlslCompileResult result = compileGlslFile(options_.shaderDirectory, name);
+    // Keep every last good pipeline: replace nothing unless all compile.
+    if (!result.ok()) return say("shader reload failed, kept the last good shaders:\n" + result.log, true);
+    spirv[name] = std::move(result.spirv);
+  }
+  renderer_.reloadShaders(spirv);
+  say("shaders reloaded from " + options_.shaderDirectory.string());
+}
+
+std::string Viewer::nextScreenshotName() const {
+  for (int i = 1;; ++i) {
+    std::string name = "shadelab-screenshot-" + std::to_string(i) + ".png";
+    if (!std::filesystem::exists(name)) return name;
+  }
+}
+
+OverlayText Viewer::overlayText() const {
+  OverlayText text;
+  std::vector<double> device(deviceMs_.begin(), deviceMs_.end());
+  std::vector<double> wall(wallMs_.begin(), wallMs_.end());
+  VkExtent2D extent = swapchain_.extent();
+  size_t views = std::max<size_t>(1, settings_.splitModels.size());
+  text.status.push_back(scene_.name + "  " + std::to_string(extent.width) + "x" +
+                        std::to_string(extent.height) + "  present " +
+                        presentModeName(swapchain_.presentMode()));
+  text.status.push_back("frame " + formatMs(median(device)) + " device, " +
+                        formatMs(median(wall)) + " wall (medians of " +
+                        std::to_string(device.size()) + ")");
+  text.status.push_back("triangles " + withThousands(gpuScene_.triangles * views) +
+                        (views > 1 ? " (" + std::to_string(views) + " views)" : ""));
+  std::string models;
+  for (ShadingModel model : settings_.splitModels)
+    models += (models.empty() ? "" : " | ") + std::string(shadingModelName(model));
+  text.status.push_back(models.empty() ? "model " + std::string(shadingModelName(settings_.shadingModel))
+                                       : "split " + models);
+  char line[128];
+  std::snprintf(line, sizeof(line), "tessellation x%g  wireframe %s", double(tessellation_),
+                settings_.wireframe ? "on" : "off");
+  text.status.push_back(line);
+  for (const auto& [model, difference] : splitErrors_) {
+    std::snprintf(line, sizeof(line), "%-12s vs phong: RMSE %5.2f  PSNR %5.1f dB",
+                  std::string(shadingModelName(model)).c_str(), difference.rmse, difference.psnr);
+    text.status.push_back(line);
+  }
+  text.status.push_back("H help");
+  text.message = message_;
+  text.messageIsError = messageIsError_;
+  if (helpVisible_) {
+    text.help.push_back("mouse: left drag orbits, right/middle drag pans, wheel zooms");
+    for (const KeyBinding& binding : keyBindings())
+      text.help.push_back(binding.name + "  " + binding.help);
+    text.help.push_back("Esc  quit");
+  }
+  return text;
+}
+
+}  // namespace shadelab
