@@ -1,0 +1,272 @@
+// The viewer in a real X window (ctest runs this program under its own Xvfb,
+// tests/run_with_xvfb.sh): scripts drive `shadelab view`, and what it
+// presented is compared with headless renders of the same state.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "core/glsl_compiler.h"
+#include "core/scene.h"
+#include "gpu_test_support.h"
+#include "view/camera_controller.h"
+
+namespace shadelab::test {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr uint32_t kWidth = 320;
+constexpr uint32_t kHeight = 180;
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+CommandResult run(const std::string& arguments, const std::string& environment = "") {
+  std::string command = environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+class Viewer : public GpuTest {
+ protected:
+  void SetUp() override {
+    GpuTest::SetUp();
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run through tests/run_with_xvfb.sh";
+    dir = fs::path(testOutputDir()) / "viewer" /
+          ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+  // Runs `view` on a script; screenshot names in it are relative to the test folder.
+  CommandResult view(const std::string& script, const std::string& options = "",
+                     const std::string& environment = "", const std::string& size = "320x180") {
+    std::ofstream(path("script.txt")) << script;
+    return run("view " + options + " --size " + size + " --present immediate --script " +
+                   path("script.txt"),
+               "cd " + dir.string() + " &&" + environment);
+  }
+  ImageU8 headless(Scene scene, ShadingModel model, std::vector<ShadingModel> split = {}) {
+    RenderSettings settings{kWidth, kHeight, model, 1};
+    settings.splitModels = std::move(split);
+    return render(scene, settings);
+  }
+  fs::path dir;
+};
+
+TEST_F(Viewer, EachShadingModelMatchesHeadlessRender) {
+  CommandResult r = view(
+      "key O\n"  // overlay off: the presented frame is the scene alone
+      "key 1\nframes 2\nscreenshot flat.png\n"
+      "key 2\nframes 2\nscreenshot gouraud.png\n"
+      "key 3\nframes 2\nscreenshot phong.png\n"
+      "key 4\nframes 2\nscreenshot blinn-phong.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  Scene scene = builtinScene("default");
+  std::map<ShadingModel, ImageU8> shots;
+  for (ShadingModel model : {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
+                             ShadingModel::BlinnPhong}) {
+    std::string name(shadingModelName(model));
+    shots[model] = readImageU8(path(name + ".png"));
+    EXPECT_TRUE(matchesImage(headless(scene, model), shots[model])) << name;
+    EXPECT_TRUE(matchesImage(loadGolden("default-" + name), shots[model])) << name;
+  }
+  // The models differ where they should: every pair by a measured margin.
+  double flatRmse = compareImages(shots[ShadingModel::Phong], shots[ShadingModel::Flat]).rmse;
+  double gouraudRmse = compareImages(shots[ShadingModel::Phong], shots[ShadingModel::Gouraud]).rmse;
+  double blinnRmse = compareImages(shots[ShadingModel::Phong], shots[ShadingModel::BlinnPhong]).rmse;
+  std::printf("screenshot RMSE against phong: flat %.2f, gouraud %.2f, blinn-phong %.2f\n",
+              flatRmse, gouraudRmse, blinnRmse);
+  EXPECT_GT(flatRmse, 1.0);
+  EXPECT_GT(gouraudRmse, 0.5);
+  EXPECT_GT(blinnRmse, 0.5);
+  // Must-fail twin: a screenshot of another model is rejected by the same tolerance.
+  EXPECT_FALSE(matchesImage(headless(scene, ShadingModel::Phong), shots[ShadingModel::Flat]));
+  EXPECT_FALSE(matchesImage(headless(scene, ShadingModel::Phong), shots[ShadingModel::Gouraud]));
+}
+
+TEST_F(Viewer, OrbitPanAndZoomMatchHeadlessRenderOfTheMovedCamera) {
+  CommandResult r = view("key O\ndrag 100 100 160 80\ndrag 160 90 150 100 right\nscroll 2\n"
+                         "frames 2\nscreenshot moved.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  Scene scene = builtinScene("default");
+  CameraController camera(scene.camera);
+  // Window coordinates are y down; the controller takes y up.
+  camera.orbit({60.0f, 20.0f}, float(kHeight));
+  camera.pan({-10.0f, -10.0f}, float(kHeight));
+  camera.zoom(2.0f);
+  Scene moved = scene;
+  moved.camera = camera.camera();
+  ImageU8 shot = readImageU8(path("moved.png"));
+  EXPECT_TRUE(matchesImage(headless(moved, ShadingModel::Phong), shot));
+  EXPECT_FALSE(matchesImage(headless(scene, ShadingModel::Phong), shot));  // it did move
+}
+
+TEST_F(Viewer, SplitScreenMatchesHeadlessSplitAndReportsErrors) {
+  CommandResult r = view("key O\nkey C\nframes 3\nscreenshot split.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::vector<ShadingModel> models = {ShadingModel::Flat, ShadingModel::Gouraud,
+                                      ShadingModel::Phong, ShadingModel::BlinnPhong};
+  ImageU8 shot = readImageU8(path("split.png"));
+  EXPECT_TRUE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong, models), shot));
+  EXPECT_FALSE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong), shot));
+}
+
+TEST_F(Viewer, UnavailableFeaturesSaySo) {
+  CommandResult r = view("key B\nkey E\nkey F\nkey M\nkey A\nframes 1\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* feature : {"bump mapping", "environment mapping", "texture filtering",
+                              "mip-level tint", "automatic tessellation"})
+    EXPECT_NE(r.output.find(std::string(feature) + ": not available in this build"),
+              std::string::npos)
+        << feature << "\n" << r.output;
+}
+
+TEST_F(Viewer, TessellationKeysMatchHeadlessRetessellatedScene) {
+  CommandResult r = view("key O\nkey T\nframes 2\nscreenshot finer.png\nkey G\nkey G\nframes 2\n"
+                         "screenshot coarser.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (auto [name, scale] : {std::pair{"finer", 2.0f}, std::pair{"coarser", 0.5f}}) {
+    Scene scene = builtinScene("default");
+    scene.retessellate(scale);
+    EXPECT_NE(r.output.find("tessellation x" + std::string(scale == 2.0f ? "2" : "0.5") + ": "),
+              std::string::npos) << r.output;
+    EXPECT_TRUE(matchesImage(headless(scene, ShadingModel::Phong),
+                             readImageU8(path(std::string(name) + ".png")))) << name;
+  }
+}
+
+TEST_F(Viewer, WireframeDrawsEdgesOverTheShadedImage) {
+  CommandResult r = view("key O\nframes 2\nscreenshot plain.png\nkey W\nframes 2\nscreenshot wire.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  ImageU8 plain = readImageU8(path("plain.png"));
+  ImageU8 wire = readImageU8(path("wire.png"));
+  ImageDifference difference = compareImages(plain, wire, 4);
+  std::printf("wireframe changes %.1f%% of pixels\n", 100.0 * difference.fractionOverThreshold);
+  EXPECT_GT(difference.fractionOverThreshold, 0.05);
+  // Lines only brighten (their colour is near white over darker shading) and
+  // the background, which has no edges, is untouched.
+  EXPECT_EQ(plain.at(2, 2), wire.at(2, 2));
+}
+
+TEST_F(Viewer, ResizeAndMinimiseRestoreAreValidationClean) {
+  CommandResult r = view("frames 3\nresize 400 240\nframes 3\nscreenshot big.png\nminimize\n"
+                         "frames 5\nrestore\nframes 3\nresize 240 160\nframes 3\n"
+                         "screenshot small.png\nkey C\nresize 330 170\nframes 3\nquit\n",
+                         "--validate");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+  ImageU8 big = readImageU8(path("big.png"));
+  ImageU8 small = readImageU8(path("small.png"));
+  EXPECT_EQ(big.width, 400u);
+  EXPECT_EQ(big.height, 240u);
+  EXPECT_EQ(small.width, 240u);
+  EXPECT_EQ(small.height, 160u);
+}
+
+TEST_F(Viewer, ThousandFramesKeepResidentMemoryFlat) {
+  CommandResult r = view("frames 100\nmemory\nframes 1000\nmemory\n", "--no-validate");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::regex pattern(R"(VmRSS (\d+) kB after (\d+) frames)");
+  std::vector<std::pair<long, long>> samples;
+  for (std::sregex_iterator it(r.output.begin(), r.output.end(), pattern), end; it != end; ++it)
+    samples.push_back({std::stol((*it)[1]), std::stol((*it)[2])});
+  ASSERT_EQ(samples.size(), 2u) << r.output;
+  EXPECT_EQ(samples[1].second - samples[0].second, 1000);
+  long growth = samples[1].first - samples[0].first;
+  std::printf("VmRSS %ld kB at frame %ld, %ld kB at frame %ld: growth %ld kB\n", samples[0].first,
+              samples[0].second, samples[1].first, samples[1].second, growth);
+  // A leak of one small allocation per frame (a descriptor set, a staging
+  // buffer, a stats vector entry per frame) would pass 1 MB; heap noise stays below.
+  EXPECT_LT(growth, 1024);
+}
+
+// Copies shaders/ to the test folder so a test can edit them.
+fs::path shaderCopy(const fs::path& dir) {
+  fs::path copy = dir / "shaders";
+  fs::create_directories(copy);
+  for (const auto& entry : fs::directory_iterator(SHADELAB_SHADER_SOURCE_DIR))
+    fs::copy_file(entry.path(), copy / entry.path().filename());
+  return copy;
+}
+
+void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << file;
+  text.replace(at, from.size(), to);
+  std::ofstream(file) << text;
+}
+
+TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
+  fs::path shaders = shaderCopy(dir);
+  // The edited shader swaps red and blue: a change that is easy to measure.
+  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, 1.0);",
+                "outColor = vec4(color.bgr, 1.0);");
+  CommandResult r = view("key O\nframes 2\nscreenshot before.png\nkey R\nframes 2\nscreenshot after.png\n",
+                         "", "SHADELAB_SHADER_DIR=" + shaders.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("shaders reloaded"), std::string::npos) << r.output;
+  ImageU8 before = readImageU8(path("before.png"));
+  ImageU8 after = readImageU8(path("after.png"));
+  EXPECT_TRUE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong), before));
+  EXPECT_FALSE(matchesImage(before, after));
+  // A headless renderer given the same edited shaders draws what the window showed.
+  std::map<std::string, std::vector<uint32_t>> spirv;
+  for (const std::string& name : Renderer::shaderNames()) {
+    GlslCompileResult compiled = compileGlslFile(shaders, name);
+    ASSERT_TRUE(compiled.ok()) << compiled.log;
+    spirv[name] = compiled.spirv;
+  }
+  Renderer edited(context());
+  edited.reloadShaders(spirv);
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong, 1};
+  ImageU8 expected = encodeSrgb8(edited.renderToImage(builtinScene("default"), settings).image);
+  EXPECT_TRUE(matchesImage(expected, after));
+}
+
+TEST_F(Viewer, ShaderCompileErrorIsShownAndLastGoodPipelineKept) {
+  fs::path shaders = shaderCopy(dir);
+  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, 1.0);", "outColor = colour;");
+  CommandResult r = view("key O\nkey R\nframes 2\nscreenshot after.png\n", "",
+                         "SHADELAB_SHADER_DIR=" + shaders.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("shader reload failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("forward.frag"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'colour' : undeclared identifier"), std::string::npos) << r.output;
+  EXPECT_TRUE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong),
+                           readImageU8(path("after.png"))));
+}
+
+TEST_F(Viewer, OverlayIsDrawnOverTheScene) {
+  CommandResult r = view("frames 3\nscreenshot overlay.png\n", "", "", "640x360");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  ImageU8 shot = readImageU8(path("overlay.png"));
+  RenderSettings settings{640, 360, ShadingModel::Phong, 1};
+  ImageU8 scene = render(builtinScene("default"), settings);
+  ImageDifference difference = compareImages(scene, shot, 4);
+  std::printf("overlay covers %.1f%% of pixels\n", 100.0 * difference.fractionOverThreshold);
+  // The status panel covers the top-left; the bottom-right is the scene.
+  EXPECT_GT(difference.fractionOverThreshold, 0.03);
+  EXPECT_LT(difference.fractionOverThreshold, 0.5);
+  EXPECT_EQ(scene.at(630, 350), shot.at(630, 350));
+  EXPECT_NE(scene.at(20, 14), shot.at(20, 14));
+}
+
+}  // namespace
+}  // namespace shadelab::test
