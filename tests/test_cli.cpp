@@ -18,8 +18,8 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
-CommandResult run(const std::string& arguments) {
-  std::string command = std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
+CommandResult run(const std::string& arguments, const std::string& environment = "") {
+  std::string command = environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
@@ -169,7 +169,7 @@ TEST_F(Cli, InfoNamesDeviceDriverAndVersion) {
 
 TEST_F(Cli, HelpSucceedsForEachCommand) {
   for (const char* command :
-       {"--help", "render --help", "compare --help", "bench --help", "info --help"}) {
+       {"--help", "render --help", "compare --help", "bench --help", "info --help", "view --help"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 0) << command << "\n" << r.output;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << command;
@@ -245,3 +245,30 @@ TEST_F(Cli, BenchBadSampleCountIsAUsageError) {
 }
 
 }  // namespace
+
+TEST_F(Cli, ViewBadScriptLineNamesFileLineAndExpectation) {
+  std::ofstream(out("script.txt")) << "frames 2\nkey 2\nfly 10\n";
+  // The script is checked before any window opens: no X server needed.
+  CommandResult r = run("view --script " + out("script.txt"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find(out("script.txt") + ":3: 'fly 10': expected a step"), std::string::npos)
+      << r.output;
+}
+
+TEST_F(Cli, ViewMissingScriptAndBadPresentModeAreInputErrors) {
+  CommandResult missing = run("view --script " + out("none.txt"));
+  EXPECT_EQ(missing.exitCode, 2) << missing.output;
+  EXPECT_NE(missing.output.find("none.txt: cannot open the file"), std::string::npos)
+      << missing.output;
+  CommandResult present = run("view --present vsync");
+  EXPECT_EQ(present.exitCode, 2) << present.output;
+  EXPECT_NE(present.output.find("--present 'vsync': expected fifo, mailbox or immediate"),
+            std::string::npos)
+      << present.output;
+}
+
+TEST_F(Cli, ViewWithoutDisplaySaysWhy) {
+  CommandResult r = run("view", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("cannot open a window"), std::string::npos) << r.output;
+}

@@ -1,0 +1,154 @@
+// The viewer's CPU side: window-to-view coordinates, the orbit / pan / zoom
+// camera against the geometry it promises, the script parser and its error
+// messages, and run-time GLSL compilation against the build's SPIR-V.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/constants.hpp>
+
+#include "core/errors.h"
+#include "core/glsl_compiler.h"
+#include "core/shader.h"
+#include "view/camera_controller.h"
+#include "view/viewer_script.h"
+#include "view/window.h"
+
+namespace shadelab {
+namespace {
+
+float angleBetween(glm::vec3 a, glm::vec3 b) {
+  return std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f));
+}
+
+TEST(WindowToView, FlipsYOnce) {
+  EXPECT_EQ(windowToView({0.0, 0.0}, {320, 180}), glm::vec2(0.0f, 180.0f));
+  EXPECT_EQ(windowToView({10.0, 170.0}, {320, 180}), glm::vec2(10.0f, 10.0f));
+}
+
+Camera frontCamera() {
+  Camera camera;
+  camera.eye = {0.0f, 0.0f, 5.0f};
+  camera.at = {0.0f, 0.0f, 0.0f};
+  return camera;
+}
+
+TEST(CameraController, UnmovedCameraIsTheSceneCamera) {
+  Camera camera = frontCamera();
+  CameraController controller(camera);
+  EXPECT_EQ(controller.camera().eye, camera.eye);
+  EXPECT_EQ(controller.camera().at, camera.at);
+}
+
+TEST(CameraController, HorizontalDragOfHalfTheHeightTurnsNinetyDegrees) {
+  CameraController controller(frontCamera());
+  controller.orbit({90.0f, 0.0f}, 180.0f);
+  glm::vec3 eye = controller.camera().eye;
+  EXPECT_NEAR(glm::length(eye), 5.0f, 1e-4f);  // distance to the target kept
+  // Dragging right turns the scene right: the eye goes to the left (-x).
+  EXPECT_NEAR(eye.x, -5.0f, 1e-4f);
+  EXPECT_NEAR(eye.z, 0.0f, 1e-4f);
+}
+
+TEST(CameraController, DraggingUpLowersTheEyeAndStopsShortOfThePole) {
+  CameraController controller(frontCamera());
+  controller.orbit({0.0f, 30.0f}, 180.0f);  // 30 degrees
+  glm::vec3 eye = controller.camera().eye;
+  EXPECT_NEAR(std::asin(eye.y / glm::length(eye)), -glm::radians(30.0f), 1e-4f);
+  controller.orbit({0.0f, 1000.0f}, 180.0f);
+  eye = controller.camera().eye;
+  EXPECT_NEAR(angleBetween(eye, {0.0f, -1.0f, 0.0f}), glm::radians(1.0f), 1e-3f);
+  EXPECT_NEAR(glm::length(eye), 5.0f, 1e-3f);
+}
+
+TEST(CameraController, PanMovesTargetWithTheCursorAtItsDepth) {
+  Camera camera = frontCamera();
+  CameraController controller(camera);
+  controller.pan({18.0f, 0.0f}, 180.0f);
+  // View height at the target: 2 d tan(fovy/2); 18 of 180 pixels is a tenth.
+  float expected = 0.1f * 2.0f * 5.0f * std::tan(glm::radians(camera.fovyDegrees) * 0.5f);
+  EXPECT_NEAR(controller.camera().at.x, -expected, 1e-5f);
+  EXPECT_NEAR(controller.camera().eye.x, -expected, 1e-5f);
+  EXPECT_EQ(controller.camera().eye.z, 5.0f);
+}
+
+TEST(CameraController, ZoomScalesDistanceByPointNinePerStep) {
+  CameraController controller(frontCamera());
+  controller.zoom(2.0f);
+  EXPECT_NEAR(glm::length(controller.camera().eye), 5.0f * 0.81f, 1e-5f);
+  controller.zoom(-2.0f);
+  EXPECT_NEAR(glm::length(controller.camera().eye), 5.0f, 1e-5f);
+  controller.zoom(100.0f);  // never through the target
+  EXPECT_GE(glm::length(controller.camera().eye), 2.0f * frontCamera().near - 1e-6f);
+}
+
+const std::vector<std::string> kKeys = {"1", "2", "C", "P"};
+
+TEST(ViewerScript, ParsesEveryStep) {
+  std::vector<ScriptStep> steps = parseViewerScriptText(
+      "# comment\nkey c\nframes 10\ndrag 1 2 3 4\ndrag 1 2 3 4 right\nscroll -1.5\n"
+      "resize 800 600\nminimize\nrestore\nmemory\nscreenshot a.png  # trailing\nquit\n",
+      "s.txt", kKeys);
+  ASSERT_EQ(steps.size(), 11u);
+  EXPECT_EQ(steps[0].kind, ScriptStep::Kind::Key);
+  EXPECT_EQ(steps[0].key, 'C');
+  EXPECT_EQ(steps[0].line, 2);
+  EXPECT_EQ(steps[1].count, 10u);
+  EXPECT_EQ(steps[2].button, MouseButton::Left);
+  EXPECT_EQ(steps[2].to, glm::dvec2(3.0, 4.0));
+  EXPECT_EQ(steps[3].button, MouseButton::Right);
+  EXPECT_EQ(steps[4].scroll, -1.5f);
+  EXPECT_EQ(steps[5].width, 800u);
+  EXPECT_EQ(steps[5].height, 600u);
+  EXPECT_EQ(steps[9].path, "a.png");
+  EXPECT_EQ(steps[10].kind, ScriptStep::Kind::Quit);
+}
+
+std::string parseError(const std::string& text) {
+  try {
+    parseViewerScriptText(text, "bad.txt", kKeys);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
+  EXPECT_EQ(parseError("frames 1\nkey X\n"), "bad.txt:2: 'key X': expected 'key K' with K one of 1 2 C P");
+  EXPECT_EQ(parseError("frames ten"), "bad.txt:1: 'frames ten': expected 'frames N' with N in 1..1000000");
+  EXPECT_EQ(parseError("frames 0"), "bad.txt:1: 'frames 0': expected 'frames N' with N in 1..1000000");
+  EXPECT_NE(parseError("drag 1 2 3").find("bad.txt:1: 'drag 1 2 3': expected 'drag X0 Y0 X1 Y1"), std::string::npos);
+  EXPECT_NE(parseError("drag 1 2 3 4 thumb").find("expected 'drag"), std::string::npos);
+  EXPECT_NE(parseError("resize 0 10").find("W and H in 1..8192"), std::string::npos);
+  EXPECT_NE(parseError("quit now").find("'quit' with nothing after it"), std::string::npos);
+  EXPECT_NE(parseError("\n\njump").find("bad.txt:3: 'jump': expected a step"), std::string::npos);
+  EXPECT_NE(parseError("screenshot a.jpg").find("(a .png file)"), std::string::npos);
+  EXPECT_NE(parseError("screenshot /no/such/dir/a.png").find("bad.txt:1:"), std::string::npos);
+}
+
+TEST(GlslCompiler, RunTimeSpirvEqualsTheBuildsSpirv) {
+  for (const char* name : {"forward.vert", "forward_flat.geom", "forward.frag"}) {
+    GlslCompileResult result = compileGlslFile(SHADELAB_SHADER_SOURCE_DIR, name);
+    ASSERT_TRUE(result.ok()) << result.log;
+    std::span<const uint32_t> built = embeddedSpirv(name);
+    EXPECT_TRUE(std::equal(result.spirv.begin(), result.spirv.end(), built.begin(), built.end()))
+        << name << ": " << result.spirv.size() << " words at run time, " << built.size()
+        << " from the build";
+  }
+}
+
+TEST(GlslCompiler, ErrorsNameFileAndLine) {
+  std::filesystem::path dir = std::filesystem::path(SHADELAB_TEST_OUTPUT_DIR) / "glsl";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "broken.frag") << "#version 460\nvoid main() {\n  undefinedThing = 1.0;\n}\n";
+  GlslCompileResult result = compileGlslFile(dir, "broken.frag");
+  EXPECT_FALSE(result.ok());
+  EXPECT_NE(result.log.find("broken.frag:3"), std::string::npos) << result.log;
+  EXPECT_NE(result.log.find("undefinedThing"), std::string::npos) << result.log;
+  EXPECT_FALSE(compileGlslFile(dir, "missing.frag").ok());
+}
+
+}  // namespace
+}  // namespace shadelab
