@@ -29,13 +29,15 @@ struct CommandResult {
 };
 
 CommandResult run(const std::string& arguments, const std::string& environment = "") {
-  std::string command = environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
+  std::string command =
+      environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    result.output.append(buffer.data(), n);
   int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -78,8 +80,8 @@ TEST_F(Viewer, EachShadingModelMatchesHeadlessRender) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   Scene scene = builtinScene("default");
   std::map<ShadingModel, ImageU8> shots;
-  for (ShadingModel model : {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
-                             ShadingModel::BlinnPhong}) {
+  for (ShadingModel model :
+       {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong, ShadingModel::BlinnPhong}) {
     std::string name(shadingModelName(model));
     shots[model] = readImageU8(path(name + ".png"));
     EXPECT_TRUE(matchesImage(headless(scene, model), shots[model])) << name;
@@ -88,7 +90,8 @@ TEST_F(Viewer, EachShadingModelMatchesHeadlessRender) {
   // The models differ where they should: every pair by a measured margin.
   double flatRmse = compareImages(shots[ShadingModel::Phong], shots[ShadingModel::Flat]).rmse;
   double gouraudRmse = compareImages(shots[ShadingModel::Phong], shots[ShadingModel::Gouraud]).rmse;
-  double blinnRmse = compareImages(shots[ShadingModel::Phong], shots[ShadingModel::BlinnPhong]).rmse;
+  double blinnRmse =
+      compareImages(shots[ShadingModel::Phong], shots[ShadingModel::BlinnPhong]).rmse;
   std::printf("screenshot RMSE against phong: flat %.2f, gouraud %.2f, blinn-phong %.2f\n",
               flatRmse, gouraudRmse, blinnRmse);
   EXPECT_GT(flatRmse, 1.0);
@@ -100,8 +103,9 @@ TEST_F(Viewer, EachShadingModelMatchesHeadlessRender) {
 }
 
 TEST_F(Viewer, OrbitPanAndZoomMatchHeadlessRenderOfTheMovedCamera) {
-  CommandResult r = view("key O\ndrag 100 100 160 80\ndrag 160 90 150 100 right\nscroll 2\n"
-                         "frames 2\nscreenshot moved.png\n");
+  CommandResult r = view(
+      "key O\ndrag 100 100 160 80\ndrag 160 90 150 100 right\nscroll 2\n"
+      "frames 2\nscreenshot moved.png\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   Scene scene = builtinScene("default");
   CameraController camera(scene.camera);
@@ -133,25 +137,30 @@ TEST_F(Viewer, UnavailableFeaturesSaySo) {
                               "mip-level tint", "automatic tessellation"})
     EXPECT_NE(r.output.find(std::string(feature) + ": not available in this build"),
               std::string::npos)
-        << feature << "\n" << r.output;
+        << feature << "\n"
+        << r.output;
 }
 
 TEST_F(Viewer, TessellationKeysMatchHeadlessRetessellatedScene) {
-  CommandResult r = view("key O\nkey T\nframes 2\nscreenshot finer.png\nkey G\nkey G\nframes 2\n"
-                         "screenshot coarser.png\n");
+  CommandResult r = view(
+      "key O\nkey T\nframes 2\nscreenshot finer.png\nkey G\nkey G\nframes 2\n"
+      "screenshot coarser.png\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (auto [name, scale] : {std::pair{"finer", 2.0f}, std::pair{"coarser", 0.5f}}) {
     Scene scene = builtinScene("default");
     scene.retessellate(scale);
     EXPECT_NE(r.output.find("tessellation x" + std::string(scale == 2.0f ? "2" : "0.5") + ": "),
-              std::string::npos) << r.output;
+              std::string::npos)
+        << r.output;
     EXPECT_TRUE(matchesImage(headless(scene, ShadingModel::Phong),
-                             readImageU8(path(std::string(name) + ".png")))) << name;
+                             readImageU8(path(std::string(name) + ".png"))))
+        << name;
   }
 }
 
 TEST_F(Viewer, WireframeDrawsEdgesOverTheShadedImage) {
-  CommandResult r = view("key O\nframes 2\nscreenshot plain.png\nkey W\nframes 2\nscreenshot wire.png\n");
+  CommandResult r =
+      view("key O\nframes 2\nscreenshot plain.png\nkey W\nframes 2\nscreenshot wire.png\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   ImageU8 plain = readImageU8(path("plain.png"));
   ImageU8 wire = readImageU8(path("wire.png"));
@@ -164,10 +173,11 @@ TEST_F(Viewer, WireframeDrawsEdgesOverTheShadedImage) {
 }
 
 TEST_F(Viewer, ResizeAndMinimiseRestoreAreValidationClean) {
-  CommandResult r = view("frames 3\nresize 400 240\nframes 3\nscreenshot big.png\nminimize\n"
-                         "frames 5\nrestore\nframes 3\nresize 240 160\nframes 3\n"
-                         "screenshot small.png\nkey C\nresize 330 170\nframes 3\nquit\n",
-                         "--validate");
+  CommandResult r = view(
+      "frames 3\nresize 400 240\nframes 3\nscreenshot big.png\nminimize\n"
+      "frames 5\nrestore\nframes 3\nresize 240 160\nframes 3\n"
+      "screenshot small.png\nkey C\nresize 330 170\nframes 3\nquit\n",
+      "--validate");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
   ImageU8 big = readImageU8(path("big.png"));
@@ -218,8 +228,9 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   // The edited shader swaps red and blue: a change that is easy to measure.
   replaceInFile(shaders / "forward.frag", "outColor = vec4(color, 1.0);",
                 "outColor = vec4(color.bgr, 1.0);");
-  CommandResult r = view("key O\nframes 2\nscreenshot before.png\nkey R\nframes 2\nscreenshot after.png\n",
-                         "", "SHADELAB_SHADER_DIR=" + shaders.string());
+  CommandResult r =
+      view("key O\nframes 2\nscreenshot before.png\nkey R\nframes 2\nscreenshot after.png\n", "",
+           "SHADELAB_SHADER_DIR=" + shaders.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("shaders reloaded"), std::string::npos) << r.output;
   ImageU8 before = readImageU8(path("before.png"));

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-
 #include <glm/gtc/constants.hpp>
 
 #include "core/errors.h"
@@ -116,10 +115,14 @@ std::string parseError(const std::string& text) {
 }
 
 TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
-  EXPECT_EQ(parseError("frames 1\nkey X\n"), "bad.txt:2: 'key X': expected 'key K' with K one of 1 2 C P");
-  EXPECT_EQ(parseError("frames ten"), "bad.txt:1: 'frames ten': expected 'frames N' with N in 1..1000000");
-  EXPECT_EQ(parseError("frames 0"), "bad.txt:1: 'frames 0': expected 'frames N' with N in 1..1000000");
-  EXPECT_NE(parseError("drag 1 2 3").find("bad.txt:1: 'drag 1 2 3': expected 'drag X0 Y0 X1 Y1"), std::string::npos);
+  EXPECT_EQ(parseError("frames 1\nkey X\n"),
+            "bad.txt:2: 'key X': expected 'key K' with K one of 1 2 C P");
+  EXPECT_EQ(parseError("frames ten"),
+            "bad.txt:1: 'frames ten': expected 'frames N' with N in 1..1000000");
+  EXPECT_EQ(parseError("frames 0"),
+            "bad.txt:1: 'frames 0': expected 'frames N' with N in 1..1000000");
+  EXPECT_NE(parseError("drag 1 2 3").find("bad.txt:1: 'drag 1 2 3': expected 'drag X0 Y0 X1 Y1"),
+            std::string::npos);
   EXPECT_NE(parseError("drag 1 2 3 4 thumb").find("expected 'drag"), std::string::npos);
   EXPECT_NE(parseError("resize 0 10").find("W and H in 1..8192"), std::string::npos);
   EXPECT_NE(parseError("quit now").find("'quit' with nothing after it"), std::string::npos);

@@ -26,12 +26,19 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   ViewerOptions viewer;
   viewer.presentMode = parsePresentMode(options.present);
-  if (!options.script.empty()) viewer.script = parseViewerScript(options.script, Viewer::keyNames());
+  if (!options.script.empty())
+    viewer.script = parseViewerScript(options.script, Viewer::keyNames());
   const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene);
 
-  Window window("shadelab view " + scene.name, size.width, size.height);
+  std::unique_ptr<Window> window;
+  try {
+    window = std::make_unique<Window>("shadelab view " + scene.name, size.width, size.height);
+  } catch (const WindowError& error) {
+    std::fprintf(stderr, "shadelab: error: %s\n", error.what());
+    return 1;
+  }
   ContextOptions contextOptions;
   contextOptions.validation = global.validate;
   contextOptions.deviceName = global.device;
@@ -39,7 +46,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
   auto context = std::make_unique<Context>(contextOptions);
   {
-    Viewer view(window, *context, std::move(scene), viewer);
+    Viewer view(*window, *context, std::move(scene), viewer);
     view.run();
   }
   return finishWithValidation(*context, 0);
@@ -49,13 +56,14 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
 
 CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
   auto options = std::make_shared<ViewOptions>();
-  CLI::App* command =
-      app.add_subcommand("view", "Interactive window: orbit the scene, toggle shading live (H: keys)");
+  CLI::App* command = app.add_subcommand(
+      "view", "Interactive window: orbit the scene, toggle shading live (H: keys)");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
   command->add_option("--size", options->size, "Initial window size WIDTHxHEIGHT")
       ->capture_default_str();
-  command->add_option("--present", options->present, "Present mode: fifo (vsync), mailbox, immediate")
+  command
+      ->add_option("--present", options->present, "Present mode: fifo (vsync), mailbox, immediate")
       ->capture_default_str();
   command->add_option("--script", options->script,
                       "Run the steps of FILE (key, frames, drag, scroll, resize, minimize, "

@@ -58,8 +58,8 @@ class FolderIncluder : public glslang::TShader::Includer {
 
 bool stageOf(const std::string& name, EShLanguage& stage) {
   static const std::map<std::string, EShLanguage> stages = {
-      {".vert", EShLangVertex},   {".geom", EShLangGeometry},       {".frag", EShLangFragment},
-      {".comp", EShLangCompute},  {".tesc", EShLangTessControl},    {".tese", EShLangTessEvaluation}};
+      {".vert", EShLangVertex},  {".geom", EShLangGeometry},    {".frag", EShLangFragment},
+      {".comp", EShLangCompute}, {".tesc", EShLangTessControl}, {".tese", EShLangTessEvaluation}};
   auto found = stages.find(std::filesystem::path(name).extension().string());
   if (found == stages.end()) return false;
   stage = found->second;

@@ -5,8 +5,8 @@
 // first when a screenshot is wanted.
 // Reads: the colour target. Writes: the swapchain image (then ColorAttachment
 // for the overlay), and the screenshot buffer.
-#include "core/resources.h"
 #include "core/barriers.h"
+#include "core/resources.h"
 
 namespace shadelab {
 

@@ -9,7 +9,9 @@
 namespace shadelab {
 namespace {
 
-void checkImguiVulkan(VkResult result) { VK_CHECK(result); }
+void checkImguiVulkan(VkResult result) {
+  VK_CHECK(result);
+}
 
 bool isSrgb(VkFormat format) {
   return format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_R8G8B8A8_SRGB;
@@ -43,14 +45,20 @@ VkRenderPass createLoadRenderPass(VkDevice device, VkFormat format) {
   subpass.pColorAttachments = &reference;
   // Before and after: the barriers of present_pass (attachment use on both sides).
   VkSubpassDependency dependencies[2] = {};
-  dependencies[0] = {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+  dependencies[0] = {VK_SUBPASS_EXTERNAL,
+                     0,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, 0};
-  dependencies[1] = {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                     0};
+  dependencies[1] = {0,
+                     VK_SUBPASS_EXTERNAL,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, 0};
+                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                     0};
   VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
   info.attachmentCount = 1;
   info.pAttachments = &attachment;
@@ -153,8 +161,8 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
   ImGui::Begin("status", nullptr, flags);
   for (const std::string& line : text.status) ImGui::TextUnformatted(line.c_str());
   if (!text.message.empty()) {
-    ImVec4 colour = text.messageIsError ? ImVec4(1.0f, 0.25f, 0.2f, 1.0f)
-                                        : ImVec4(1.0f, 0.85f, 0.3f, 1.0f);
+    ImVec4 colour =
+        text.messageIsError ? ImVec4(1.0f, 0.25f, 0.2f, 1.0f) : ImVec4(1.0f, 0.85f, 0.3f, 1.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, colour);
     ImGui::PushTextWrapPos(float(extent_.width) * 0.9f);
     ImGui::TextUnformatted(text.message.c_str());
@@ -162,6 +170,15 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
     ImGui::PopStyleColor();
   }
   ImGui::End();
+  for (size_t i = 0; i < text.columnLabels.size(); ++i) {
+    const OverlayText::Label& label = text.columnLabels[i];
+    ImGui::SetNextWindowPos(ImVec2(label.left + 8, float(extent_.height) - 8), ImGuiCond_Always,
+                            ImVec2(0, 1));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin(("column " + std::to_string(i)).c_str(), nullptr, flags);
+    ImGui::TextUnformatted(label.text.c_str());
+    ImGui::End();
+  }
   if (!text.help.empty()) {
     ImGui::SetNextWindowPos(ImVec2(float(extent_.width) - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
     ImGui::SetNextWindowBgAlpha(0.75f);

@@ -14,7 +14,12 @@ struct OverlayText {
   std::vector<std::string> status;  // top-left panel, one line each
   std::string message;              // the last action's result or error, if any
   bool messageIsError = false;
-  std::vector<std::string> help;    // shown in its own panel when not empty
+  std::vector<std::string> help;  // shown in its own panel when not empty
+  struct Label {
+    float left = 0.0f;  // pixels from the window's left edge
+    std::string text;
+  };
+  std::vector<Label> columnLabels;  // split screen: a name at the foot of each column
 };
 
 class Overlay {
@@ -26,11 +31,11 @@ class Overlay {
   Overlay& operator=(const Overlay&) = delete;
 
   // After every swapchain (re)creation: one framebuffer per image view.
-  void setTargets(const std::vector<VkImageView>& views, VkExtent2D extent,
-                  uint32_t minImageCount);
+  void setTargets(const std::vector<VkImageView>& views, VkExtent2D extent, uint32_t minImageCount);
   // Lays out the text and records it onto swapchain image `imageIndex`, which
   // is in ImageUse::ColorAttachment and stays there.
-  void record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText& text, float deltaSeconds);
+  void record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText& text,
+              float deltaSeconds);
 
  private:
   const Context& context_;

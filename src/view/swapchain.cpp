@@ -46,8 +46,8 @@ Swapchain::Swapchain(const Context& context, VkSurfaceKHR surface, VkPresentMode
     : context_(context), surface_(surface), presentMode_(presentMode) {
   VkPhysicalDevice physical = context.physicalDevice();
   VkBool32 presentable = VK_FALSE;
-  VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(physical, context.queueFamily(), surface,
-                                                &presentable));
+  VK_CHECK(
+      vkGetPhysicalDeviceSurfaceSupportKHR(physical, context.queueFamily(), surface, &presentable));
   if (!presentable) throw VulkanError("the graphics queue cannot present to this window");
   uint32_t count = 0;
   VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface, &count, nullptr));
@@ -56,7 +56,8 @@ Swapchain::Swapchain(const Context& context, VkSurfaceKHR surface, VkPresentMode
   if (std::find(modes.begin(), modes.end(), presentMode) == modes.end()) {
     std::string offered;
     for (VkPresentModeKHR mode : modes)
-      if (presentModeName(mode) != "other") offered += (offered.empty() ? "" : ", ") + presentModeName(mode);
+      if (presentModeName(mode) != "other")
+        offered += (offered.empty() ? "" : ", ") + presentModeName(mode);
     throw InputError("--present " + presentModeName(presentMode) +
                      ": this window system does not offer it (offered: " + offered + ")");
   }
@@ -108,8 +109,8 @@ bool Swapchain::recreate(VkExtent2D wanted) {
   minImageCount_ = std::max(2u, caps.minImageCount);
   VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
   info.surface = surface_;
-  info.minImageCount = caps.maxImageCount ? std::min(minImageCount_, caps.maxImageCount)
-                                          : minImageCount_;
+  info.minImageCount =
+      caps.maxImageCount ? std::min(minImageCount_, caps.maxImageCount) : minImageCount_;
   info.imageFormat = format_;
   info.imageColorSpace = colorSpace_;
   info.imageExtent = extent;
@@ -150,8 +151,8 @@ bool Swapchain::recreate(VkExtent2D wanted) {
 }
 
 SwapchainStatus Swapchain::acquire(VkSemaphore imageAvailable, uint32_t& imageIndex) {
-  VkResult result = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX,
-                                          imageAvailable, VK_NULL_HANDLE, &imageIndex);
+  VkResult result = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX, imageAvailable,
+                                          VK_NULL_HANDLE, &imageIndex);
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return SwapchainStatus::OutOfDate;
   if (result == VK_SUBOPTIMAL_KHR) return SwapchainStatus::Suboptimal;
   VK_CHECK(result);

@@ -91,7 +91,9 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
   lastFrameTime_ = nowSeconds();
 }
 
-Viewer::~Viewer() { context_.waitIdle(); }
+Viewer::~Viewer() {
+  context_.waitIdle();
+}
 
 void Viewer::say(const std::string& message, bool error) {
   message_ = message;
@@ -267,7 +269,8 @@ void Viewer::drawFrame() {
   if (metricsDue) {
     VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 8;
     if (!work.metrics || work.metrics.size() < bytes)
-      work.metrics = Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
+      work.metrics =
+          Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
     renderer_.recordReadback(work.metrics);
     work.metricsPending = true;
     work.metricsSettings = settings_;
@@ -275,7 +278,8 @@ void Viewer::drawFrame() {
   VkImage image = swapchain_.image(imageIndex);
   recordBlitToSwapchain(cmd, renderer_.colorTarget(), renderer_.colorTargetUse(), image, extent);
   double now = nowSeconds();
-  if (overlayVisible_) overlay_->record(cmd, imageIndex, overlayText(), float(now - lastFrameTime_));
+  if (overlayVisible_)
+    overlay_->record(cmd, imageIndex, overlayText(), float(now - lastFrameTime_));
   lastFrameTime_ = now;
   const Buffer* screenshot = nullptr;
   if (!screenshotRequest_.empty()) {
@@ -286,8 +290,8 @@ void Viewer::drawFrame() {
     screenshot = &work.screenshot;
   }
   recordPresentTransition(cmd, image, extent, screenshot);
-  renderer_.submitFrame(
-      {imageAvailable_[slot], VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, swapchain_.renderingDone(imageIndex)});
+  renderer_.submitFrame({imageAvailable_[slot], VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                         swapchain_.renderingDone(imageIndex)});
   if (swapchain_.present(imageIndex) != SwapchainStatus::Ok) swapchainStale_ = true;
   ++framesDrawn_;
 }
@@ -325,7 +329,8 @@ void Viewer::computeSplitErrors(const SlotWork& work) {
   ImageU8 referenceImage = column(reference, width);
   splitErrors_.clear();
   for (size_t i = 0; i < models.size(); ++i)
-    if (i != reference) splitErrors_.push_back({models[i], compareImages(referenceImage, column(i, width))});
+    if (i != reference)
+      splitErrors_.push_back({models[i], compareImages(referenceImage, column(i, width))});
 }
 
 }  // namespace shadelab

@@ -34,8 +34,8 @@ struct ViewerOptions {
 
 class Viewer;
 struct KeyBinding {
-  int key = 0;           // GLFW key code
-  std::string name;      // as typed in a script: "1", "C"
+  int key = 0;       // GLFW key code
+  std::string name;  // as typed in a script: "1", "C"
   std::string help;
   std::function<void(Viewer&)> action;
 };

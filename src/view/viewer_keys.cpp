@@ -2,6 +2,7 @@
 // feature is not in this build says so; when the feature lands as a
 // RenderSettings field, its binding toggles that field like W does.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -93,7 +94,8 @@ void Viewer::handleKey(int key) {
 void Viewer::setModel(ShadingModel model) {
   settings_.shadingModel = model;
   std::string name(shadingModelName(model));
-  say(settings_.splitModels.empty() ? name : name + " (split screen shows all models: C leaves it)");
+  say(settings_.splitModels.empty() ? name
+                                    : name + " (split screen shows all models: C leaves it)");
 }
 
 void Viewer::notAvailable(const std::string& feature) {
@@ -118,7 +120,8 @@ void Viewer::reloadShaders() {
   for (const std::string& name : Renderer::shaderNames()) {
     GlslCompileResult result = compileGlslFile(options_.shaderDirectory, name);
     // Keep every last good pipeline: replace nothing unless all compile.
-    if (!result.ok()) return say("shader reload failed, kept the last good shaders:\n" + result.log, true);
+    if (!result.ok())
+      return say("shader reload failed, kept the last good shaders:\n" + result.log, true);
     spirv[name] = std::move(result.spirv);
   }
   renderer_.reloadShaders(spirv);
@@ -141,16 +144,16 @@ OverlayText Viewer::overlayText() const {
   text.status.push_back(scene_.name + "  " + std::to_string(extent.width) + "x" +
                         std::to_string(extent.height) + "  present " +
                         presentModeName(swapchain_.presentMode()));
-  text.status.push_back("frame " + formatMs(median(device)) + " device, " +
-                        formatMs(median(wall)) + " wall (medians of " +
-                        std::to_string(device.size()) + ")");
+  text.status.push_back("frame " + formatMs(median(device)) + " device, " + formatMs(median(wall)) +
+                        " wall (medians of " + std::to_string(device.size()) + ")");
   text.status.push_back("triangles " + withThousands(gpuScene_.triangles * views) +
                         (views > 1 ? " (" + std::to_string(views) + " views)" : ""));
   std::string models;
   for (ShadingModel model : settings_.splitModels)
     models += (models.empty() ? "" : " | ") + std::string(shadingModelName(model));
-  text.status.push_back(models.empty() ? "model " + std::string(shadingModelName(settings_.shadingModel))
-                                       : "split " + models);
+  text.status.push_back(models.empty()
+                            ? "model " + std::string(shadingModelName(settings_.shadingModel))
+                            : "split " + models);
   char line[128];
   std::snprintf(line, sizeof(line), "tessellation x%g  wireframe %s", double(tessellation_),
                 settings_.wireframe ? "on" : "off");
@@ -161,6 +164,10 @@ OverlayText Viewer::overlayText() const {
     text.status.push_back(line);
   }
   text.status.push_back("H help");
+  float columnWidth = float(extent.width) / float(views);
+  for (size_t i = 0; i < settings_.splitModels.size(); ++i)
+    text.columnLabels.push_back({std::floor(columnWidth * float(i)),
+                                 std::string(shadingModelName(settings_.splitModels[i]))});
   text.message = message_;
   text.messageIsError = messageIsError_;
   if (helpVisible_) {

@@ -47,7 +47,8 @@ ScriptStep parseLine(const LineReader& reader, const std::vector<std::string>& k
     for (const std::string& key : keys) usage += " " + key;
     reader.expectCount(2, 2, usage);
     std::string name = reader.words[1];
-    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::toupper(c); });
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return std::toupper(c); });
     if (std::find(keys.begin(), keys.end(), name) == keys.end()) reader.fail(usage);
     step.kind = ScriptStep::Kind::Key;
     step.key = name[0];  // GLFW codes digits and letters as their ASCII upper case
@@ -60,14 +61,20 @@ ScriptStep parseLine(const LineReader& reader, const std::vector<std::string>& k
     const char* usage = "'drag X0 Y0 X1 Y1 [left|right|middle]' in window pixels";
     reader.expectCount(5, 6, usage);
     step.kind = ScriptStep::Kind::Drag;
-    step.from = {reader.number<double>(1, -1e5, 1e5, usage), reader.number<double>(2, -1e5, 1e5, usage)};
-    step.to = {reader.number<double>(3, -1e5, 1e5, usage), reader.number<double>(4, -1e5, 1e5, usage)};
+    step.from = {reader.number<double>(1, -1e5, 1e5, usage),
+                 reader.number<double>(2, -1e5, 1e5, usage)};
+    step.to = {reader.number<double>(3, -1e5, 1e5, usage),
+               reader.number<double>(4, -1e5, 1e5, usage)};
     if (reader.words.size() == 6) {
       const std::string& button = reader.words[5];
-      if (button == "left") step.button = MouseButton::Left;
-      else if (button == "right") step.button = MouseButton::Right;
-      else if (button == "middle") step.button = MouseButton::Middle;
-      else reader.fail(usage);
+      if (button == "left")
+        step.button = MouseButton::Left;
+      else if (button == "right")
+        step.button = MouseButton::Right;
+      else if (button == "middle")
+        step.button = MouseButton::Middle;
+      else
+        reader.fail(usage);
     }
   } else if (command == "scroll") {
     const char* usage = "'scroll N' with N a number of wheel steps in -100..100";
@@ -93,16 +100,19 @@ ScriptStep parseLine(const LineReader& reader, const std::vector<std::string>& k
     }
   } else {
     static const std::pair<const char*, ScriptStep::Kind> bare[] = {
-        {"minimize", ScriptStep::Kind::Minimize}, {"restore", ScriptStep::Kind::Restore},
-        {"memory", ScriptStep::Kind::Memory},     {"quit", ScriptStep::Kind::Quit}};
+        {"minimize", ScriptStep::Kind::Minimize},
+        {"restore", ScriptStep::Kind::Restore},
+        {"memory", ScriptStep::Kind::Memory},
+        {"quit", ScriptStep::Kind::Quit}};
     for (const auto& [name, kind] : bare) {
       if (command != name) continue;
       reader.expectCount(1, 1, "'" + command + "' with nothing after it");
       step.kind = kind;
       return step;
     }
-    reader.fail("a step: key, frames, drag, scroll, resize, minimize, restore, screenshot, "
-                "memory or quit");
+    reader.fail(
+        "a step: key, frames, drag, scroll, resize, minimize, restore, screenshot, "
+        "memory or quit");
   }
   return step;
 }

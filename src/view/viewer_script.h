@@ -19,10 +19,21 @@
 namespace shadelab {
 
 struct ScriptStep {
-  enum class Kind { Key, Frames, Drag, Scroll, Resize, Minimize, Restore, Screenshot, Memory, Quit };
+  enum class Kind {
+    Key,
+    Frames,
+    Drag,
+    Scroll,
+    Resize,
+    Minimize,
+    Restore,
+    Screenshot,
+    Memory,
+    Quit
+  };
   Kind kind = Kind::Quit;
-  int key = 0;               // Key: GLFW key code
-  uint32_t count = 0;        // Frames
+  int key = 0;                    // Key: GLFW key code
+  uint32_t count = 0;             // Frames
   glm::dvec2 from{0.0}, to{0.0};  // Drag, window coordinates
   MouseButton button = MouseButton::Left;
   float scroll = 0.0f;

@@ -11,7 +11,9 @@ namespace {
 
 std::string lastGlfwError;
 
-void onGlfwError(int, const char* description) { lastGlfwError = description; }
+void onGlfwError(int, const char* description) {
+  lastGlfwError = description;
+}
 
 MouseButton buttonOf(int glfwButton) {
   if (glfwButton == GLFW_MOUSE_BUTTON_RIGHT) return MouseButton::Right;
@@ -28,17 +30,17 @@ glm::vec2 windowToView(glm::dvec2 window, glm::ivec2 windowSize) {
 Window::Window(const std::string& title, uint32_t width, uint32_t height) {
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit())
-    throw VulkanError("cannot open a window (" + lastGlfwError +
+    throw WindowError("cannot open a window (" + lastGlfwError +
                       "); run under an X server, e.g. Xvfb :1 & DISPLAY=:1");
   if (!glfwVulkanSupported()) {
     glfwTerminate();
-    throw VulkanError("GLFW finds no Vulkan loader for windows");
+    throw WindowError("GLFW finds no Vulkan loader for windows");
   }
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
   if (!window_) {
     glfwTerminate();
-    throw VulkanError("cannot create a window: " + lastGlfwError);
+    throw WindowError("cannot create a window: " + lastGlfwError);
   }
   glfwSetWindowUserPointer(window_, this);
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
@@ -81,9 +83,15 @@ VkSurfaceKHR Window::createSurface(VkInstance instance) const {
   return surface;
 }
 
-void Window::pollEvents() { glfwPollEvents(); }
-void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
-bool Window::closeRequested() const { return glfwWindowShouldClose(window_); }
+void Window::pollEvents() {
+  glfwPollEvents();
+}
+void Window::waitEvents(double timeoutSeconds) {
+  glfwWaitEventsTimeout(timeoutSeconds);
+}
+bool Window::closeRequested() const {
+  return glfwWindowShouldClose(window_);
+}
 
 glm::ivec2 Window::framebufferSize() const {
   glm::ivec2 size;
@@ -97,12 +105,18 @@ glm::ivec2 Window::windowSize() const {
   return size;
 }
 
-bool Window::iconified() const { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED); }
+bool Window::iconified() const {
+  return glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
+}
 void Window::setSize(uint32_t width, uint32_t height) {
   glfwSetWindowSize(window_, int(width), int(height));
 }
-void Window::iconify() { glfwIconifyWindow(window_); }
-void Window::restore() { glfwRestoreWindow(window_); }
+void Window::iconify() {
+  glfwIconifyWindow(window_);
+}
+void Window::restore() {
+  glfwRestoreWindow(window_);
+}
 
 void Window::injectButton(MouseButton button, bool down, glm::dvec2 windowPosition) {
   InputEvent event{down ? InputEvent::Kind::ButtonDown : InputEvent::Kind::ButtonUp};

@@ -4,10 +4,10 @@
 #include <vulkan/vulkan.h>
 
 #include <deque>
+#include <glm/glm.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 struct GLFWwindow;
 
@@ -23,13 +23,20 @@ struct InputEvent {
   float scroll = 0.0f;       // wheel steps, positive away from the user
 };
 
+// No window could be opened: the environment's fault (no X server), not the
+// user's input nor a Vulkan failure. Exit code 1 with the reason.
+class WindowError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Window coordinates have their origin top-left with y down; everything the
 // viewer computes uses y up. This is the one place that converts.
 glm::vec2 windowToView(glm::dvec2 window, glm::ivec2 windowSize);
 
 class Window {
  public:
-  // Throws VulkanError naming the reason when no window can be opened (no
+  // Throws WindowError naming the reason when no window can be opened (no
   // DISPLAY, no Vulkan-capable GLFW).
   Window(const std::string& title, uint32_t width, uint32_t height);
   ~Window();
