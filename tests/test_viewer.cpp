@@ -186,6 +186,22 @@ TEST_F(Viewer, ResizeAndMinimiseRestoreAreValidationClean) {
   EXPECT_EQ(big.height, 240u);
   EXPECT_EQ(small.width, 240u);
   EXPECT_EQ(small.height, 160u);
+  // Built at start, after each of three resizes and after the restore.
+  std::smatch builds;
+  ASSERT_TRUE(std::regex_search(r.output, builds, std::regex(R"(swapchain built (\d+) times)")))
+      << r.output;
+  EXPECT_GE(std::stoi(builds[1]), 5) << r.output;
+}
+
+TEST_F(Viewer, EveryPresentModeRunsValidationClean) {
+  for (const char* mode : {"fifo", "mailbox", "immediate"}) {
+    std::ofstream(path("script.txt")) << "frames 5\n";
+    CommandResult r = run(std::string("view --validate --size 160x90 --present ") + mode +
+                          " --script " + path("script.txt"));
+    EXPECT_EQ(r.exitCode, 0) << mode << "\n" << r.output;
+    EXPECT_NE(r.output.find("view: 5 frames"), std::string::npos) << mode << "\n" << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << mode << "\n" << r.output;
+  }
 }
 
 TEST_F(Viewer, ThousandFramesKeepResidentMemoryFlat) {

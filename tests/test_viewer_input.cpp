@@ -127,6 +127,9 @@ TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
   EXPECT_NE(parseError("resize 0 10").find("W and H in 1..8192"), std::string::npos);
   EXPECT_NE(parseError("quit now").find("'quit' with nothing after it"), std::string::npos);
   EXPECT_NE(parseError("\n\njump").find("bad.txt:3: 'jump': expected a step"), std::string::npos);
+  EXPECT_EQ(parseError("minimize\nscreenshot a.png\n"),
+            "bad.txt:2: 'screenshot a.png': expected 'restore' first: nothing is presented while "
+            "minimised");
   EXPECT_NE(parseError("screenshot a.jpg").find("(a .png file)"), std::string::npos);
   EXPECT_NE(parseError("screenshot /no/such/dir/a.png").find("bad.txt:1:"), std::string::npos);
 }

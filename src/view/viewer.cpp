@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <fstream>
 
-#include "core/errors.h"
 #include "core/image.h"
 #include "core/stats.h"
 #include "core/vk_check.h"
@@ -87,7 +86,11 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
   swapchain_.recreate({uint32_t(size.x), uint32_t(size.y)});
   overlay_ = std::make_unique<Overlay>(context, swapchain_.format(), swapchain_.minImageCount(),
                                        std::max(3u, swapchain_.imageCount()));
-  swapchainStale_ = true;
+  if (swapchain_.valid()) {
+    overlay_->setTargets(swapchain_.views(), swapchain_.extent(), swapchain_.minImageCount());
+    swapchainStale_ = false;
+    ++swapchainBuilds_;
+  }
   lastFrameTime_ = nowSeconds();
 }
 
@@ -126,6 +129,8 @@ void Viewer::run() {
   std::printf("view: %llu frames; median of the last %zu: %.3f ms device (scene), %.3f ms wall\n",
               static_cast<unsigned long long>(framesDrawn_), device.size(), median(device),
               median(wall));
+  std::printf("view: swapchain built %u times (%u out of date, %u suboptimal)\n", swapchainBuilds_,
+              outOfDate_, suboptimal_);
 }
 
 bool Viewer::advanceScript() {
@@ -179,9 +184,6 @@ void Viewer::runStep(const ScriptStep& step) {
       minimizedByScript_ = false;
       break;
     case ScriptStep::Kind::Screenshot:
-      if (minimizedByScript_)
-        throw InputError("script line " + std::to_string(step.line) +
-                         ": screenshot while minimised: nothing is presented (restore first)");
       screenshotRequest_ = step.path;
       framesToRun_ = 1;
       break;
@@ -229,6 +231,7 @@ void Viewer::handleEvents() {
 void Viewer::recreateSwapchain() {
   glm::ivec2 size = window_.framebufferSize();
   if (!swapchain_.recreate({uint32_t(size.x), uint32_t(size.y)})) return;
+  ++swapchainBuilds_;
   overlay_->setTargets(swapchain_.views(), swapchain_.extent(), swapchain_.minImageCount());
   swapchainStale_ = false;
 }
@@ -251,10 +254,14 @@ void Viewer::drawFrame() {
   uint32_t imageIndex = 0;
   SwapchainStatus status = swapchain_.acquire(imageAvailable_[slot], imageIndex);
   if (status == SwapchainStatus::OutOfDate) {
+    ++outOfDate_;
     swapchainStale_ = true;
     return;
   }
-  if (status == SwapchainStatus::Suboptimal) swapchainStale_ = true;  // draw this one, then rebuild
+  if (status == SwapchainStatus::Suboptimal) {
+    ++suboptimal_;
+    swapchainStale_ = true;
+  }  // draw this one, then rebuild
 
   VkExtent2D extent = swapchain_.extent();
   settings_.width = extent.width;
@@ -292,7 +299,11 @@ void Viewer::drawFrame() {
   recordPresentTransition(cmd, image, extent, screenshot);
   renderer_.submitFrame({imageAvailable_[slot], VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                          swapchain_.renderingDone(imageIndex)});
-  if (swapchain_.present(imageIndex) != SwapchainStatus::Ok) swapchainStale_ = true;
+  status = swapchain_.present(imageIndex);
+  if (status != SwapchainStatus::Ok) {
+    ++(status == SwapchainStatus::OutOfDate ? outOfDate_ : suboptimal_);
+    swapchainStale_ = true;
+  }
   ++framesDrawn_;
 }
 

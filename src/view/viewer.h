@@ -105,6 +105,7 @@ class Viewer {
 
   std::deque<double> deviceMs_, wallMs_;  // the last 120 frames
   uint64_t framesDrawn_ = 0;
+  uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;
   std::vector<std::pair<ShadingModel, ImageDifference>> splitErrors_;
   std::string message_;
   bool messageIsError_ = false;

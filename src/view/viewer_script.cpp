@@ -125,13 +125,20 @@ std::vector<ScriptStep> parseViewerScriptText(const std::string& text, const std
   std::istringstream lines(text);
   std::string line;
   LineReader reader{fileName};
+  bool minimized = false;
   while (std::getline(lines, line)) {
     ++reader.line;
     line = line.substr(0, line.find('#'));
     std::istringstream words(line);
     reader.words.clear();
     for (std::string word; words >> word;) reader.words.push_back(word);
-    if (!reader.words.empty()) steps.push_back(parseLine(reader, keys));
+    if (reader.words.empty()) continue;
+    steps.push_back(parseLine(reader, keys));
+    ScriptStep::Kind kind = steps.back().kind;
+    if (kind == ScriptStep::Kind::Screenshot && minimized)
+      reader.fail("'restore' first: nothing is presented while minimised");
+    if (kind == ScriptStep::Kind::Minimize) minimized = true;
+    if (kind == ScriptStep::Kind::Restore) minimized = false;
   }
   return steps;
 }
