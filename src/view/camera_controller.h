@@ -23,7 +23,6 @@ class CameraController {
   void zoom(float steps);
 
   const Camera& camera() const { return camera_; }
-  void reset(const Camera& camera) { camera_ = camera; }
 
  private:
   Camera camera_;

@@ -118,8 +118,10 @@ void Viewer::run() {
     bool wasMinimized = minimized_;
     minimized_ = minimizedByScript_ || window_.iconified() || size.x == 0 || size.y == 0;
     if (wasMinimized && !minimized_) swapchainStale_ = true;  // restored: rebuild for the new state
-    if (!minimized_) drawFrame();
-    if (framesToRun_ > 0) --framesToRun_;
+    // A script's frame is a presented one (an out-of-date swapchain is
+    // rebuilt first), or an idle tick while minimised.
+    bool presented = !minimized_ && drawFrame();
+    if (framesToRun_ > 0 && (presented || minimized_)) --framesToRun_;
   }
   RenderStats stats;
   renderer_.finishFrames(stats);
@@ -236,13 +238,13 @@ void Viewer::recreateSwapchain() {
   swapchainStale_ = false;
 }
 
-void Viewer::drawFrame() {
+bool Viewer::drawFrame() {
   glm::ivec2 size = window_.framebufferSize();
   VkExtent2D current = swapchain_.extent();
   if (swapchainStale_ || !swapchain_.valid() || int(current.width) != size.x ||
       int(current.height) != size.y)
     recreateSwapchain();
-  if (!swapchain_.valid() || swapchainStale_) return;
+  if (!swapchain_.valid() || swapchainStale_) return false;
 
   uint32_t slot = renderer_.frameSlot();
   RenderStats stats;
@@ -256,7 +258,7 @@ void Viewer::drawFrame() {
   if (status == SwapchainStatus::OutOfDate) {
     ++outOfDate_;
     swapchainStale_ = true;
-    return;
+    return false;
   }
   if (status == SwapchainStatus::Suboptimal) {
     ++suboptimal_;
@@ -305,6 +307,7 @@ void Viewer::drawFrame() {
     swapchainStale_ = true;
   }
   ++framesDrawn_;
+  return true;
 }
 
 void Viewer::finishSlotWork(SlotWork& work) {

@@ -67,7 +67,7 @@ class Viewer {
   void runStep(const ScriptStep& step);
   void handleEvents();
   void handleKey(int key);
-  void drawFrame();
+  bool drawFrame();  // false when nothing was presented
   void recreateSwapchain();
   void finishSlotWork(SlotWork& work);
   void computeSplitErrors(const SlotWork& work);
