@@ -21,6 +21,11 @@ trap cleanup EXIT
 Xvfb -displayfd 3 -screen 0 1280x720x24 -nolisten tcp 3>"$display_file" \
   >"$runtime_dir/xvfb.log" 2>&1 &
 xvfb_pid=$!
+# Should this script be killed outright (a ctest timeout), the trap does not
+# run: a watcher stops Xvfb once this shell is gone.
+wrapper_pid=$$
+( while kill -0 "$wrapper_pid" 2>/dev/null; do sleep 1; done; kill "$xvfb_pid" 2>/dev/null ) \
+  </dev/null >/dev/null 2>&1 &
 for _ in $(seq 100); do
   [[ -s "$display_file" ]] && break
   if ! kill -0 "$xvfb_pid" 2>/dev/null; then

@@ -19,13 +19,8 @@ bool isSrgb(VkFormat format) {
 
 // ImGui's colours are sRGB-encoded values; an _SRGB attachment encodes what
 // the shader writes, so without decoding them first they come out washed out.
-void decodeStyleColours() {
-  ImGuiStyle& style = ImGui::GetStyle();
-  for (ImVec4& colour : style.Colors) {
-    colour.x = srgbToLinear(colour.x);
-    colour.y = srgbToLinear(colour.y);
-    colour.z = srgbToLinear(colour.z);
-  }
+ImVec4 decoded(ImVec4 colour) {
+  return {srgbToLinear(colour.x), srgbToLinear(colour.y), srgbToLinear(colour.z), colour.w};
 }
 
 VkRenderPass createLoadRenderPass(VkDevice device, VkFormat format) {
@@ -95,7 +90,9 @@ Overlay::Overlay(const Context& context, VkFormat swapchainFormat, uint32_t minI
   io.IniFilename = nullptr;  // no imgui.ini written into the user's folder
   io.LogFilename = nullptr;
   ImGui::StyleColorsDark();
-  if (isSrgb(swapchainFormat)) decodeStyleColours();
+  srgbTarget_ = isSrgb(swapchainFormat);
+  if (srgbTarget_)
+    for (ImVec4& colour : ImGui::GetStyle().Colors) colour = decoded(colour);
 
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = context.instance();
@@ -163,7 +160,7 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
   if (!text.message.empty()) {
     ImVec4 colour =
         text.messageIsError ? ImVec4(1.0f, 0.25f, 0.2f, 1.0f) : ImVec4(1.0f, 0.85f, 0.3f, 1.0f);
-    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::PushStyleColor(ImGuiCol_Text, srgbTarget_ ? decoded(colour) : colour);
     ImGui::PushTextWrapPos(float(extent_.width) * 0.9f);
     ImGui::TextUnformatted(text.message.c_str());
     ImGui::PopTextWrapPos();

@@ -43,6 +43,7 @@ class Overlay {
   DescriptorPool descriptorPool_;
   std::vector<VkFramebuffer> framebuffers_;
   VkExtent2D extent_{0, 0};
+  bool srgbTarget_ = false;
   void destroyFramebuffers();
 };
 
