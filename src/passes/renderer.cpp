@@ -44,6 +44,7 @@ Renderer::Renderer(const Context& context)
   VK_CHECK(vkCreateDescriptorPool(context.device(), &poolInfo, nullptr, &pool));
   descriptorPool_ = DescriptorPool(context.device(), pool);
   for (Frame& frame : frames_) createFrame(frame);
+  lastCompletion_ = nowMs();
 }
 
 Renderer::~Renderer() { vkDeviceWaitIdle(context_.device()); }
