@@ -260,6 +260,9 @@ TEST_F(Cli, ViewMissingScriptAndBadPresentModeAreInputErrors) {
   EXPECT_EQ(missing.exitCode, 2) << missing.output;
   EXPECT_NE(missing.output.find("none.txt: cannot open the file"), std::string::npos)
       << missing.output;
+  CommandResult mode = run("view --mode shiny");
+  EXPECT_EQ(mode.exitCode, 2) << mode.output;
+  EXPECT_NE(mode.output.find("--mode 'shiny': expected one of"), std::string::npos) << mode.output;
   CommandResult present = run("view --present vsync");
   EXPECT_EQ(present.exitCode, 2) << present.output;
   EXPECT_NE(present.output.find("--present 'vsync': expected fifo, mailbox or immediate"),

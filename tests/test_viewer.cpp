@@ -158,6 +158,20 @@ TEST_F(Viewer, TessellationKeysMatchHeadlessRetessellatedScene) {
   }
 }
 
+TEST_F(Viewer, StartOptionsMatchHeadlessRenderWithTheSameOptions) {
+  CommandResult r =
+      view("key O\nframes 2\nscreenshot start.png\n", "teapot --mode gouraud --tess 0.5 --msaa 4");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  Scene scene = builtinScene("teapot");
+  scene.retessellate(0.5f);
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Gouraud, 1};
+  settings.msaaSamples = 4;
+  ImageU8 shot = readImageU8(path("start.png"));
+  EXPECT_TRUE(matchesImage(render(scene, settings), shot));
+  settings.msaaSamples = 1;  // must-fail twin: the same without multisampling
+  EXPECT_FALSE(matchesImage(render(scene, settings), shot));
+}
+
 TEST_F(Viewer, WireframeDrawsEdgesOverTheShadedImage) {
   CommandResult r =
       view("key O\nframes 2\nscreenshot plain.png\nkey W\nframes 2\nscreenshot wire.png\n");

@@ -19,6 +19,9 @@ struct ViewOptions {
   std::string size = "1280x720";
   std::string present = "fifo";
   std::string script;
+  std::string mode = "phong";
+  float tessellation = 1.0f;
+  uint32_t msaa = 1;
 };
 
 int runView(const ViewOptions& options, const GlobalOptions& global) {
@@ -26,6 +29,9 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   ViewerOptions viewer;
   viewer.presentMode = parsePresentMode(options.present);
+  viewer.initial.shadingModel = parseShadingModelOption(options.mode, "--mode");
+  viewer.initial.msaaSamples = options.msaa;
+  viewer.tessellation = options.tessellation;
   if (!options.script.empty())
     viewer.script = parseViewerScript(options.script, Viewer::keyNames());
   const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
@@ -65,6 +71,19 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
   command
       ->add_option("--present", options->present, "Present mode: fifo (vsync), mailbox, immediate")
       ->capture_default_str();
+  command
+      ->add_option("--mode", options->mode,
+                   "Initial shading model: flat, gouraud, phong, "
+                   "blinn-phong, unlit (keys 1-4 change it)")
+      ->capture_default_str();
+  command
+      ->add_option("--tess", options->tessellation,
+                   "Initial tessellation scale, as for render (T and G change it)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.125f, 16.0f));
+  command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
+      ->capture_default_str()
+      ->check(CLI::IsMember({1u, 4u}));
   command->add_option("--script", options->script,
                       "Run the steps of FILE (key, frames, drag, scroll, resize, minimize, "
                       "restore, screenshot, memory, quit) instead of waiting for input");

@@ -80,7 +80,13 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
       renderer_(context),
       gpuScene_(uploadScene(context, scene_)),
       swapchain_(context, surface_.get(), options.presentMode),
-      camera_(scene_.camera) {
+      camera_(scene_.camera),
+      settings_(options.initial),
+      tessellation_(options.tessellation) {
+  if (tessellation_ != 1.0f) {
+    scene_.retessellate(tessellation_);
+    gpuScene_ = uploadScene(context, scene_);
+  }
   for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
   glm::ivec2 size = window.framebufferSize();
   swapchain_.recreate({uint32_t(size.x), uint32_t(size.y)});

@@ -30,6 +30,8 @@ struct ViewerOptions {
   std::optional<std::vector<ScriptStep>> script;  // none: interactive
   std::filesystem::path shaderDirectory;          // where R reloads GLSL from
   uint32_t metricsInterval = 30;                  // frames between split-screen error readbacks
+  RenderSettings initial;                         // model, MSAA, ...; the size follows the window
+  float tessellation = 1.0f;                      // as render --tess; T and G change it
 };
 
 class Viewer;
@@ -93,7 +95,7 @@ class Viewer {
   CameraController camera_;
   RenderSettings settings_;
 
-  float tessellation_ = 1.0f;
+  float tessellation_;
   bool overlayVisible_ = true;
   bool helpVisible_ = false;
   bool minimizedByScript_ = false;
