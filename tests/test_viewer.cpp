@@ -120,6 +120,13 @@ TEST_F(Viewer, OrbitPanAndZoomMatchHeadlessRenderOfTheMovedCamera) {
   EXPECT_FALSE(matchesImage(headless(scene, ShadingModel::Phong), shot));  // it did move
 }
 
+TEST_F(Viewer, ZeroKeyPutsTheCameraBack) {
+  CommandResult r = view("key O\ndrag 100 100 160 80\nscroll 3\nkey 0\nframes 2\nscreenshot back.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong),
+                           readImageU8(path("back.png"))));
+}
+
 TEST_F(Viewer, SplitScreenMatchesHeadlessSplitAndReportsErrors) {
   CommandResult r = view("key O\nkey C\nframes 3\nscreenshot split.png\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -80,6 +80,7 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
       renderer_(context),
       gpuScene_(uploadScene(context, scene_)),
       swapchain_(context, surface_.get(), options.presentMode),
+      sceneCamera_(scene_.camera),
       camera_(scene_.camera),
       settings_(options.initial),
       tessellation_(options.tessellation) {

@@ -92,6 +92,7 @@ class Viewer {
   std::unique_ptr<Overlay> overlay_;
   std::array<Semaphore, Renderer::kFramesInFlight> imageAvailable_;
   std::array<SlotWork, Renderer::kFramesInFlight> slotWork_;
+  Camera sceneCamera_;  // as loaded; scene_.camera follows camera_
   CameraController camera_;
   RenderSettings settings_;
 

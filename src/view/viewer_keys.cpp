@@ -24,8 +24,12 @@ std::string formatMs(double ms) {
 
 std::string withThousands(uint64_t value) {
   std::string digits = std::to_string(value);
-  for (int i = int(digits.size()) - 3; i > 0; i -= 3) digits.insert(size_t(i), ",");
-  return digits;
+  std::string grouped;
+  for (size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) grouped += ',';
+    grouped += digits[i];
+  }
+  return grouped;
 }
 
 }  // namespace
@@ -41,6 +45,11 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
       modelKey('2', ShadingModel::Gouraud),
       modelKey('3', ShadingModel::Phong),
       modelKey('4', ShadingModel::BlinnPhong),
+      {'0', "0", "camera back to the scene's",
+       [](Viewer& v) {
+         v.camera_ = CameraController(v.sceneCamera_);
+         v.say("camera reset");
+       }},
       {'C', "C", "split screen: the four models side by side, errors against Phong",
        [](Viewer& v) {
          bool on = v.settings_.splitModels.empty();
