@@ -348,10 +348,21 @@ void Viewer::computeSplitErrors(const SlotWork& work) {
   // Columns differ by at most one pixel in width: compare the common part.
   uint32_t width = uint32_t(std::floor(columnWidth));
   ImageU8 referenceImage = column(reference, width);
+  bool first = splitErrors_.empty();
   splitErrors_.clear();
-  for (size_t i = 0; i < models.size(); ++i)
-    if (i != reference)
-      splitErrors_.push_back({models[i], compareImages(referenceImage, column(i, width))});
+  std::string line = "split-screen error against phong:";
+  for (size_t i = 0; i < models.size(); ++i) {
+    if (i == reference) continue;
+    ImageDifference difference = compareImages(referenceImage, column(i, width));
+    splitErrors_.push_back({models[i], difference});
+    char text[96];
+    std::snprintf(text, sizeof(text), " %s RMSE %.3f PSNR %.2f dB;",
+                  std::string(shadingModelName(models[i])).c_str(), difference.rmse,
+                  difference.psnr);
+    line += text;
+  }
+  // Logged once per split-screen session; the overlay shows every update.
+  if (first) std::printf("view: %s\n", line.c_str());
 }
 
 }  // namespace shadelab
