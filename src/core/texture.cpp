@@ -27,8 +27,9 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
     throw InputError("texture file '" + name + "' holds no pixels");
   // Only floating-point files hold linear light; 8- and 16-bit files hold
   // encoded values already (sRGB colour, or raw data).
-  bool linearLight = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                     spec.format.basetype == OIIO::TypeDesc::HALF;
+  OIIO::TypeDesc stored = source.nativespec().format;  // `spec` is the float buffer's
+  bool linearLight = stored.basetype == OIIO::TypeDesc::FLOAT ||
+                     stored.basetype == OIIO::TypeDesc::HALF;
   int channels = spec.nchannels;
   std::vector<float> raw(size_t(spec.width) * spec.height * channels);
   source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
