@@ -182,7 +182,7 @@ Scene mipPlaneScene() {
   Scene scene;
   scene.name = "mip-plane";
   scene.camera.eye = {0.0f, 1.0f, 0.0f};
-  scene.camera.at = {0.0f, 0.8f, -10.0f};
+  scene.camera.at = {0.0f, -0.2f, -10.0f};
   scene.camera.fovyDegrees = 50.0f;
   scene.camera.far = 400.0f;
   scene.ambient = glm::vec3(0.35f);
