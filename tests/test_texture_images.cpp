@@ -1,7 +1,6 @@
-// Texture mapping, mipmapping and bump mapping on the device: goldens with
-// must-fail twins, mipmapping measured against a supersampled reference, and
-// the known failure cases of bump mapping (silhouettes, mirrored UVs, grazing
-// angles), each a measured quantity. Figures are printed.
+// Texture mapping and mipmapping on the device: goldens of mip-plane per
+// filter with must-fail twins, and mipmapping measured against supersampled
+// references. Figures are printed. Bump mapping: test_bump_images.cpp.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -90,14 +89,6 @@ TEST_F(TextureImages, MipTintMatchesGoldenAndShowsSeveralLevels) {
   ImageU8 image = render(builtinScene("mip-plane"), settings);
   EXPECT_TRUE(matchesGolden("mip-plane-tint", image));
   EXPECT_FALSE(matchesImage(loadGolden("mip-plane-trilinear"), image));
-}
-
-TEST_F(TextureImages, BumpMatchesGoldenAndRejectsBumpOff) {
-  ImageU8 image = render(builtinScene("bump"), settingsFor(kWidth, kHeight, std::nullopt));
-  EXPECT_TRUE(matchesGolden("bump-phong", image));
-  RenderSettings off = settingsFor(kWidth, kHeight, std::nullopt);
-  off.textures.bump = false;
-  EXPECT_FALSE(matchesImage(loadGolden("bump-phong"), render(builtinScene("bump"), off)));
 }
 
 // The reference takes 64 point samples of the base level per pixel (the scene
