@@ -122,5 +122,30 @@ TEST_F(TextureUpload, SamplersAreCreatedOncePerDescription) {
   EXPECT_EQ(textures.samplerCount(), 2u);
 }
 
+// The UV convention (core/mesh.h): origin at the bottom left, v up, so an
+// image's top row shows at the top of a plane facing the camera, unflipped.
+TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
+  Scene scene;
+  scene.camera.eye = {0.0f, 0.0f, 5.0f};
+  scene.camera.projection = Projection::Orthographic;
+  scene.ambient = glm::vec3(1.0f);
+  Mesh plane = makePlane(2.0f, 1);
+  for (Vertex& vertex : plane.vertices)  // rotate the XZ plane to face +z: -z becomes +y
+    vertex = {{vertex.position.x, -vertex.position.z, 0.0f}, {0, 0, 1}, vertex.uv, {1, 0, 0, 1}};
+  // Top left red, top right green, bottom left blue, bottom right white.
+  scene.textures.push_back({"quadrants", 2, 2,
+                            {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255},
+                            true});
+  Material material{glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0.0f), 1.0f};
+  material.diffuseMap.texture = 0;
+  material.diffuseMap.sampler.filter = TextureFilter::Nearest;
+  scene.objects.push_back({"plane", scene.addMesh(plane), glm::mat4(1.0f), material});
+  ImageU8 image = render(scene, {32, 32, ShadingModel::Phong, 1});
+  EXPECT_EQ(image.at(8, 8), glm::u8vec4(255, 0, 0, 255));
+  EXPECT_EQ(image.at(24, 8), glm::u8vec4(0, 255, 0, 255));
+  EXPECT_EQ(image.at(8, 24), glm::u8vec4(0, 0, 255, 255));
+  EXPECT_EQ(image.at(24, 24), glm::u8vec4(255, 255, 255, 255));
+}
+
 }  // namespace
 }  // namespace shadelab::test
