@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include "core/procedural_textures.h"
-#include "core/texture.h"
 #include "core/scene.h"
+#include "core/texture.h"
 #include "core/transform.h"
 #include "gpu_test_support.h"
 
@@ -25,7 +25,9 @@ RenderSettings settingsFor(uint32_t width, uint32_t height, ShadingModel model, 
   return settings;
 }
 
-float luminance(glm::vec4 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+float luminance(glm::vec4 c) {
+  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
 
 using BumpImages = GpuTest;
 
@@ -34,7 +36,8 @@ class BumpGolden : public GpuTest, public ::testing::WithParamInterface<ShadingM
 TEST_P(BumpGolden, MatchesGoldenAndRejectsAMissingDiffuseMap) {
   ShadingModel model = GetParam();
   std::string name = "bump-" + std::string(shadingModelName(model));
-  EXPECT_TRUE(matchesGolden(name, render(builtinScene("bump"), settingsFor(kWidth, kHeight, model))));
+  EXPECT_TRUE(
+      matchesGolden(name, render(builtinScene("bump"), settingsFor(kWidth, kHeight, model))));
   Scene plain = builtinScene("bump");
   plain.objects[0].material.diffuseMap = {};  // the wall's bricks
   EXPECT_FALSE(matchesImage(loadGolden(name), render(plain, settingsFor(kWidth, kHeight, model))));
@@ -42,7 +45,8 @@ TEST_P(BumpGolden, MatchesGoldenAndRejectsAMissingDiffuseMap) {
 
 INSTANTIATE_TEST_SUITE_P(Models, BumpGolden,
                          ::testing::Values(ShadingModel::Flat, ShadingModel::Gouraud,
-                                           ShadingModel::Phong, ShadingModel::BlinnPhong),
+                                           ShadingModel::Phong, ShadingModel::BlinnPhong,
+                                           ShadingModel::Unlit),
                          [](const auto& info) {
                            std::string name(shadingModelName(info.param));
                            std::erase(name, '-');
@@ -50,9 +54,9 @@ INSTANTIATE_TEST_SUITE_P(Models, BumpGolden,
                          });
 
 TEST_F(BumpImages, PhongGoldenRejectsBumpOff) {
-  EXPECT_FALSE(matchesImage(loadGolden("bump-phong"),
-                            render(builtinScene("bump"),
-                                   settingsFor(kWidth, kHeight, ShadingModel::Phong, false))));
+  EXPECT_FALSE(matchesImage(
+      loadGolden("bump-phong"),
+      render(builtinScene("bump"), settingsFor(kWidth, kHeight, ShadingModel::Phong, false))));
 }
 
 // Flat lights once per triangle and Gouraud once per vertex, before any
@@ -161,9 +165,12 @@ TEST_F(BumpImages, MirroredUvsLightBothHalvesAlikeThanksToHandedness) {
   // mirrored half down, away from the light.
   Mesh wrong = mesh;
   for (Vertex& vertex : wrong.vertices) vertex.tangent.w = 1.0f;
-  auto [wrongLeft, wrongRight] = halfMeans(renderer().renderToImage(mirroredScene(wrong), settings).image);
-  std::printf("mirrored UVs: left %.4f, right %.4f (ratio %.4f); without handedness right %.4f "
-              "(ratio %.4f)\n", left, right, right / left, wrongRight, wrongRight / wrongLeft);
+  auto [wrongLeft, wrongRight] =
+      halfMeans(renderer().renderToImage(mirroredScene(wrong), settings).image);
+  std::printf(
+      "mirrored UVs: left %.4f, right %.4f (ratio %.4f); without handedness right %.4f "
+      "(ratio %.4f)\n",
+      left, right, right / left, wrongRight, wrongRight / wrongLeft);
   EXPECT_NEAR(right / left, 1.0, 0.01);
   EXPECT_LT(wrongRight / wrongLeft, 0.9);
 }
@@ -175,7 +182,9 @@ TEST_F(BumpImages, HeightMapNormalMatchesTheFormula) {
   Scene scene = mirroredScene(mirroredQuads());
   scene.meshes[0] = makePlane(2.0f, 1);
   for (Vertex& vertex : scene.meshes[0].vertices)  // the plane into xy, facing +z
-    vertex = {{vertex.position.x, -vertex.position.z, 0.0f}, {0.0f, 0.0f, 1.0f}, vertex.uv,
+    vertex = {{vertex.position.x, -vertex.position.z, 0.0f},
+              {0.0f, 0.0f, 1.0f},
+              vertex.uv,
               {1.0f, 0.0f, 0.0f, 1.0f}};
   Texture ramp{"ramp", 256, 1, std::vector<uint8_t>(256 * 4), false};
   for (uint32_t x = 0; x < 256; ++x)

@@ -2,10 +2,9 @@
 // (colour sRGB, data linear, each loaded once), procedural generators, the
 // sampler, bump scale and UV mapping, and every error naming its field and,
 // for files, the file and the material.
+#include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
-#include <OpenImageIO/imageio.h>
 
 #include <filesystem>
 #include <fstream>
@@ -39,8 +38,9 @@ fs::path sceneDir() {
 
 Scene load(const std::string& materialFields) {
   fs::path file = sceneDir() / "scene.json";
-  std::ofstream(file) << R"({"materials": {"brick": {)" << materialFields
-                      << R"(}}, "objects": [{"name": "wall", "shape": "plane", "material": "brick"}]})";
+  std::ofstream(file)
+      << R"({"materials": {"brick": {)" << materialFields
+      << R"(}}, "objects": [{"name": "wall", "shape": "plane", "material": "brick"}]})";
   return loadSceneJson(file);
 }
 
@@ -74,8 +74,8 @@ TEST(SceneJsonTextures, ProceduralMapsMatchTheGenerators) {
   const Material& material = scene.objects[0].material;
   const Texture& diffuse = scene.textures[size_t(material.diffuseMap.texture)];
   EXPECT_EQ(diffuse.width, 16u);
-  EXPECT_EQ(diffuse.rgba8[0], 255);                  // the first check is the high colour
-  EXPECT_EQ(diffuse.rgba8[8 * 4], 0);                // the next check along the row is low
+  EXPECT_EQ(diffuse.rgba8[0], 255);    // the first check is the high colour
+  EXPECT_EQ(diffuse.rgba8[8 * 4], 0);  // the next check along the row is low
   HeightField dimples = proceduralHeight({HeightPattern::Dimples, 32, 8});
   EXPECT_EQ(scene.textures[size_t(material.normalMap.texture)].rgba8,
             normalMapTexture(dimples, 2.0f, "").rgba8);
@@ -130,9 +130,9 @@ TEST(SceneJsonTextures, InlineMaterialErrorsNameTheObject) {
     loadSceneJson(file);
     FAIL() << "no InputError";
   } catch (const InputError& error) {
-    EXPECT_THAT(error.what(), AllOf(HasSubstr("objects[0].material.height_map"),
-                                    HasSubstr("gone.png"),
-                                    HasSubstr("the material of object 'ball'")));
+    EXPECT_THAT(error.what(),
+                AllOf(HasSubstr("objects[0].material.height_map"), HasSubstr("gone.png"),
+                      HasSubstr("the material of object 'ball'")));
   }
 }
 

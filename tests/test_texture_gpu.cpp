@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "core/image.h"
-
 #include "core/procedural_textures.h"
 #include "core/texture.h"
 #include "gpu_test_support.h"
@@ -67,7 +66,8 @@ TEST_F(TextureUpload, BaseLevelReadsBackAsUploaded) {
 // A black/white checker averages to half the light: linear 0.5, which sRGB
 // encodes as 188. Averaging the codes (as a UNORM chain does) gives 128.
 TEST_F(TextureUpload, LastLevelIsTheLinearAverageForSrgbAndTheCodeAverageForData) {
-  std::vector<uint8_t> srgb = readTextureLevel(context(), upload(context(), checker(64, 64, true)), 6);
+  std::vector<uint8_t> srgb =
+      readTextureLevel(context(), upload(context(), checker(64, 64, true)), 6);
   std::vector<uint8_t> unorm =
       readTextureLevel(context(), upload(context(), checker(64, 64, false)), 6);
   std::printf("64x64 checker, 1x1 level: sRGB %d (expected 188), UNORM %d (expected 127-128)\n",
@@ -102,7 +102,8 @@ TEST_F(TextureUpload, OddSizeLastLevelIsTheAverageOfASmoothTexture) {
 // halving tap lands at a different phase of the pattern, so the 1x1 level is
 // off the true average (188); measured here so a change in it is seen.
 TEST_F(TextureUpload, OddSizeCheckerShowsTheBlitChainsBias) {
-  std::vector<uint8_t> last = readTextureLevel(context(), upload(context(), checker(37, 23, true)), 5);
+  std::vector<uint8_t> last =
+      readTextureLevel(context(), upload(context(), checker(37, 23, true)), 5);
   std::printf("37x23 one-texel checker, 1x1 level: sRGB %d (true average 188)\n", last[0]);
   EXPECT_NEAR(last[0], 188, 24);
 }
@@ -133,7 +134,9 @@ TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
   for (Vertex& vertex : plane.vertices)  // rotate the XZ plane to face +z: -z becomes +y
     vertex = {{vertex.position.x, -vertex.position.z, 0.0f}, {0, 0, 1}, vertex.uv, {1, 0, 0, 1}};
   // Top left red, top right green, bottom left blue, bottom right white.
-  scene.textures.push_back({"quadrants", 2, 2,
+  scene.textures.push_back({"quadrants",
+                            2,
+                            2,
                             {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255},
                             true});
   Material material{glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0.0f), 1.0f};

@@ -61,7 +61,8 @@ struct FilterGolden {
 class MipPlaneGolden : public GpuTest, public ::testing::WithParamInterface<FilterGolden> {};
 
 TEST_P(MipPlaneGolden, MatchesGolden) {
-  ImageU8 image = render(builtinScene("mip-plane"), settingsFor(kWidth, kHeight, GetParam().filter));
+  ImageU8 image =
+      render(builtinScene("mip-plane"), settingsFor(kWidth, kHeight, GetParam().filter));
   EXPECT_TRUE(matchesGolden(std::string("mip-plane-") + GetParam().name, image));
 }
 
@@ -98,7 +99,9 @@ TEST_F(TextureImages, MipTintMatchesGoldenAndShowsSeveralLevels) {
 TEST_F(TextureImages, MipmappingBeatsNearestAgainstASupersampledReference) {
   Scene scene = builtinScene("mip-plane");
   ImageRgba supersampled =
-      renderer().renderToImage(scene, settingsFor(8 * kWidth, 8 * kHeight, TextureFilter::Nearest)).image;
+      renderer()
+          .renderToImage(scene, settingsFor(8 * kWidth, 8 * kHeight, TextureFilter::Nearest))
+          .image;
   ImageU8 reference = encodeSrgb8(boxDownsample(supersampled, 8));
   auto error = [&](TextureFilter filter) {
     return compareImages(reference, render(scene, settingsFor(kWidth, kHeight, filter))).rmse;
@@ -106,9 +109,10 @@ TEST_F(TextureImages, MipmappingBeatsNearestAgainstASupersampledReference) {
   double nearest = error(TextureFilter::Nearest);
   double bilinear = error(TextureFilter::Bilinear);
   double trilinear = error(TextureFilter::Trilinear);
-  std::printf("mip-plane %ux%u, RMSE against 64 spp of the base level: nearest %.2f, bilinear "
-              "%.2f, trilinear %.2f (trilinear/nearest %.2f)\n",
-              kWidth, kHeight, nearest, bilinear, trilinear, trilinear / nearest);
+  std::printf(
+      "mip-plane %ux%u, RMSE against 64 spp of the base level: nearest %.2f, bilinear "
+      "%.2f, trilinear %.2f (trilinear/nearest %.2f)\n",
+      kWidth, kHeight, nearest, bilinear, trilinear, trilinear / nearest);
   EXPECT_LT(trilinear, 0.5 * nearest);
   EXPECT_LT(bilinear, 0.8 * nearest);
   EXPECT_LT(trilinear, bilinear);
@@ -136,9 +140,10 @@ TEST_F(TextureImages, AnisotropicBeatsNearestAndTrilinearAtTinySize) {
   double aniso = error(TextureFilter::Anisotropic, false);
   double trilinearFar = error(TextureFilter::Trilinear, true);
   double anisoFar = error(TextureFilter::Anisotropic, true);
-  std::printf("mip-plane 64x64, RMSE against 256 spp: nearest %.2f, trilinear %.2f, aniso(8x) "
-              "%.2f; rows %u-%u below the horizon: trilinear %.2f, aniso %.2f\n",
-              nearest, trilinear, aniso, band, band + 15, trilinearFar, anisoFar);
+  std::printf(
+      "mip-plane 64x64, RMSE against 256 spp: nearest %.2f, trilinear %.2f, aniso(8x) "
+      "%.2f; rows %u-%u below the horizon: trilinear %.2f, aniso %.2f\n",
+      nearest, trilinear, aniso, band, band + 15, trilinearFar, anisoFar);
   EXPECT_LT(aniso, 0.5 * nearest);
   EXPECT_LT(anisoFar, 0.95 * trilinearFar);
 }

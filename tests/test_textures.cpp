@@ -1,9 +1,8 @@
 // Textures on the CPU: mip chain sizes, image files into Texture (sRGB for
 // colour, linear for data), the procedural generators and the normal maps
 // derived from them, and the S-mappings against their written formulas.
-#include <gtest/gtest.h>
-
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
@@ -70,7 +69,8 @@ TEST(TextureFile, EightBitPngKeepsItsValuesForColourAndData) {
 TEST(TextureFile, GreyReplicatesIntoRgb) {
   fs::path path = tempDir() / "grey.png";
   writeRaw<uint8_t>(path, 1, 1, 1, OIIO::TypeDesc::UINT8, {77});
-  EXPECT_EQ(loadTextureFile(path, TextureRole::Data).rgba8, (std::vector<uint8_t>{77, 77, 77, 255}));
+  EXPECT_EQ(loadTextureFile(path, TextureRole::Data).rgba8,
+            (std::vector<uint8_t>{77, 77, 77, 255}));
 }
 
 TEST(TextureFile, FloatExrIsLinearLightEncodedToSrgbForColourOnly) {
@@ -183,7 +183,8 @@ TEST(SMapping, CylindricalIsTheAngleAroundYAndTheHeight) {
 
 TEST(SMapping, SphericalIsLongitudeAndLatitude) {
   glm::vec3 d = glm::normalize(glm::vec3(1.0f, 1.0f, -1.0f));
-  glm::vec2 uv = projectUv(UvProjection::Spherical, glm::vec3(1.0f, 0.0f, 0.0f) + 2.0f * d, {}, kBox);
+  glm::vec2 uv =
+      projectUv(UvProjection::Spherical, glm::vec3(1.0f, 0.0f, 0.0f) + 2.0f * d, {}, kBox);
   expectUv(uv, {0.5f + std::atan2(d.x, d.z) / (2.0f * kPi), 0.5f + std::asin(d.y) / kPi});
   expectUv(projectUv(UvProjection::Spherical, {1.0f, 5.0f, 0.0f}, {}, kBox).y * glm::vec2(1.0f),
            glm::vec2(1.0f));  // the north pole

@@ -12,7 +12,9 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-float fract(float x) { return x - std::floor(x); }
+float fract(float x) {
+  return x - std::floor(x);
+}
 
 float smoothstep(float edge0, float edge1, float x) {
   float t = std::clamp((x - edge0) / (edge1 - edge0), 0.0f, 1.0f);
@@ -72,18 +74,21 @@ HeightField proceduralHeight(const ProceduralTexture& desc) {
   float cellsPerTexel = float(desc.repeats) / float(desc.size);
   for (uint32_t y = 0; y < desc.size; ++y)
     for (uint32_t x = 0; x < desc.size; ++x)
-      field.values[size_t(y) * desc.size + x] =
-          patternHeight(desc.pattern, (float(x) + 0.5f) * cellsPerTexel,
-                        (float(y) + 0.5f) * cellsPerTexel);
+      field.values[size_t(y) * desc.size + x] = patternHeight(
+          desc.pattern, (float(x) + 0.5f) * cellsPerTexel, (float(y) + 0.5f) * cellsPerTexel);
   return field;
 }
 
 const char* heightPatternName(HeightPattern pattern) {
   switch (pattern) {
-    case HeightPattern::Checker: return "checker";
-    case HeightPattern::Bricks: return "bricks";
-    case HeightPattern::Dimples: return "dimples";
-    case HeightPattern::Waves: return "waves";
+    case HeightPattern::Checker:
+      return "checker";
+    case HeightPattern::Bricks:
+      return "bricks";
+    case HeightPattern::Dimples:
+      return "dimples";
+    case HeightPattern::Waves:
+      return "waves";
   }
   return "?";
 }

@@ -2,10 +2,9 @@
 // Textures the project generates itself, deterministically (no files): height
 // fields in 0..1 and the colour, height and normal maps made from them.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/scene.h"
 
@@ -20,8 +19,8 @@ enum class HeightPattern {
 
 struct ProceduralTexture {
   HeightPattern pattern = HeightPattern::Checker;
-  uint32_t size = 256;    // texels per side (square), 1..4096
-  uint32_t repeats = 8;   // cells per side: checks, brick rows, dimples, wave periods (>= 1)
+  uint32_t size = 256;   // texels per side (square), 1..4096
+  uint32_t repeats = 8;  // cells per side: checks, brick rows, dimples, wave periods (>= 1)
 };
 
 // A square height field, row 0 at the top. Every pattern has period
@@ -29,7 +28,7 @@ struct ProceduralTexture {
 struct HeightField {
   uint32_t width = 0;
   uint32_t height = 0;
-  std::vector<float> values;  // width * height, 0..1
+  std::vector<float> values;             // width * height, 0..1
   float at(int32_t x, int32_t y) const;  // wraps around (the patterns tile)
 };
 

@@ -41,17 +41,17 @@ glm::vec2 parseUvScale(const Field& field) {
 }  // namespace
 
 const Names& TextureLibrary::fieldNames() {
-  static const Names names = {kDiffuse, kNormal, kHeight, "bump_scale", "sampler",
-                              "uv_mapping", "uv_scale"};
+  static const Names names = {kDiffuse,  kNormal,      kHeight,   "bump_scale",
+                              "sampler", "uv_mapping", "uv_scale"};
   return names;
 }
 
-void TextureLibrary::parseTextures(const Field& material, const std::string& owner,
-                                   Material& out) {
+void TextureLibrary::parseTextures(const Field& material, const std::string& owner, Material& out) {
   SamplerDesc sampler;
   if (auto f = material.optional("sampler")) sampler = parseSampler(*f);
   out.diffuseMap.sampler = out.normalMap.sampler = out.heightMap.sampler = sampler;
-  if (auto f = material.optional(kDiffuse)) out.diffuseMap.texture = mapTexture(*f, owner, kDiffuse);
+  if (auto f = material.optional(kDiffuse))
+    out.diffuseMap.texture = mapTexture(*f, owner, kDiffuse);
   if (auto f = material.optional(kNormal)) out.normalMap.texture = mapTexture(*f, owner, kNormal);
   if (auto f = material.optional(kHeight)) out.heightMap.texture = mapTexture(*f, owner, kHeight);
   if (auto f = material.optional("bump_scale")) out.bumpScale = f->nonNegative();

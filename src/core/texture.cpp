@@ -1,10 +1,10 @@
 #include "core/texture.h"
 
+#include <OpenImageIO/imagebuf.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
-
-#include <OpenImageIO/imagebuf.h>
 
 #include "core/errors.h"
 #include "core/image.h"
@@ -20,16 +20,16 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
     throw InputError("texture file '" + name + "' is a directory, expected an image");
   OIIO::ImageBuf source(name);
   if (!source.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw InputError("texture file '" + name + "' cannot be read as an image: " +
-                     source.geterror());
+    throw InputError("texture file '" + name +
+                     "' cannot be read as an image: " + source.geterror());
   const OIIO::ImageSpec& spec = source.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw InputError("texture file '" + name + "' holds no pixels");
   // Only floating-point files hold linear light; 8- and 16-bit files hold
   // encoded values already (sRGB colour, or raw data).
   OIIO::TypeDesc stored = source.nativespec().format;  // `spec` is the float buffer's
-  bool linearLight = stored.basetype == OIIO::TypeDesc::FLOAT ||
-                     stored.basetype == OIIO::TypeDesc::HALF;
+  bool linearLight =
+      stored.basetype == OIIO::TypeDesc::FLOAT || stored.basetype == OIIO::TypeDesc::HALF;
   int channels = spec.nchannels;
   std::vector<float> raw(size_t(spec.width) * spec.height * channels);
   source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
@@ -42,8 +42,8 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
   texture.srgb = role == TextureRole::Color;
   texture.rgba8.resize(size_t(texture.width) * texture.height * 4);
   auto quantize = [](float value) {
-    return uint8_t(std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) *
-                               255.0f));
+    return uint8_t(
+        std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 255.0f));
   };
   for (size_t p = 0; p < size_t(texture.width) * texture.height; ++p) {
     const float* in = &raw[p * channels];
@@ -69,7 +69,9 @@ namespace {
 constexpr const char* kFilterNames[] = {"nearest", "bilinear", "trilinear", "aniso"};
 }
 
-const char* textureFilterName(TextureFilter filter) { return kFilterNames[int(filter)]; }
+const char* textureFilterName(TextureFilter filter) {
+  return kFilterNames[int(filter)];
+}
 
 std::optional<TextureFilter> parseTextureFilter(std::string_view name) {
   for (int i = 0; i < 4; ++i)

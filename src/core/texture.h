@@ -4,10 +4,9 @@
 // (passes/scene_textures, passes/mip_generation).
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string_view>
-
-#include <glm/glm.hpp>
 
 #include "core/scene.h"
 

@@ -52,8 +52,8 @@ void MipGeneration::record(VkCommandBuffer cmd, VkImage image, uint32_t width, u
   if (levels > 1)
     imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::TransferSource,
                  ImageUse::ShaderRead, 0, levels - 1);
-  imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::TransferDest,
-               ImageUse::ShaderRead, levels - 1, 1);
+  imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::TransferDest, ImageUse::ShaderRead,
+               levels - 1, 1);
 }
 
 }  // namespace shadelab

@@ -16,9 +16,12 @@ namespace {
 
 VkSamplerAddressMode addressMode(TextureWrap wrap) {
   switch (wrap) {
-    case TextureWrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    case TextureWrap::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    case TextureWrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case TextureWrap::Repeat:
+      return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case TextureWrap::ClampToEdge:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case TextureWrap::MirroredRepeat:
+      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
   }
   return VK_SAMPLER_ADDRESS_MODE_REPEAT;
 }
@@ -45,8 +48,8 @@ std::vector<GpuTexture> uploadTextures(const Context& context, const MipGenerati
     gpu.width = texture->width;
     gpu.height = texture->height;
     gpu.levels = mipLevelCount(texture->width, texture->height);
-    ImageDesc desc{texture->srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
-                   gpu.width, gpu.height, gpu.levels};
+    ImageDesc desc{texture->srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM, gpu.width,
+                   gpu.height, gpu.levels};
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                  VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     gpu.image = Image(context, desc);
@@ -124,8 +127,8 @@ VkSampler SceneTextures::sampler(const SamplerDesc& desc) {
     if (!context_.features().samplerAnisotropy)
       throw InputError("filter aniso: this device offers no anisotropic filtering");
     info.anisotropyEnable = VK_TRUE;
-    info.maxAnisotropy = std::clamp(desc.maxAnisotropy, 1.0f,
-                                    context_.properties().limits.maxSamplerAnisotropy);
+    info.maxAnisotropy =
+        std::clamp(desc.maxAnisotropy, 1.0f, context_.properties().limits.maxSamplerAnisotropy);
   }
   VkSampler handle = VK_NULL_HANDLE;
   VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &handle));

@@ -23,8 +23,8 @@ struct GpuTexture {
 
 struct TextureOptions {
   std::optional<TextureFilter> filterOverride;  // replaces every sampler's filter
-  bool bump = true;                              // false: normal and height maps ignored
-  bool mipTint = false;                          // diffuse texels tinted by mip level
+  bool bump = true;                             // false: normal and height maps ignored
+  bool mipTint = false;                         // diffuse texels tinted by mip level
 };
 
 class SceneTextures {
