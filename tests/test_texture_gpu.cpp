@@ -125,7 +125,7 @@ TEST_F(TextureUpload, SamplersAreCreatedOncePerDescription) {
 
 // The UV convention (core/mesh.h): origin at the bottom left, v up, so an
 // image's top row shows at the top of a plane facing the camera, unflipped.
-TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
+Scene quadrantScene() {
   Scene scene;
   scene.camera.eye = {0.0f, 0.0f, 5.0f};
   scene.camera.projection = Projection::Orthographic;
@@ -143,11 +143,34 @@ TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
   material.diffuseMap.texture = 0;
   material.diffuseMap.sampler.filter = TextureFilter::Nearest;
   scene.objects.push_back({"plane", scene.addMesh(plane), glm::mat4(1.0f), material});
-  ImageU8 image = render(scene, {32, 32, ShadingModel::Phong, 1});
+  return scene;
+}
+
+TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
+  ImageU8 image = render(quadrantScene(), {32, 32, ShadingModel::Phong, 1});
   EXPECT_EQ(image.at(8, 8), glm::u8vec4(255, 0, 0, 255));
   EXPECT_EQ(image.at(24, 8), glm::u8vec4(0, 255, 0, 255));
   EXPECT_EQ(image.at(8, 24), glm::u8vec4(0, 0, 255, 255));
   EXPECT_EQ(image.at(24, 24), glm::u8vec4(255, 255, 255, 255));
+}
+
+// A planar S-mapping projects the image along -z: a sphere seen from +z shows
+// it like the plane does, drawn from a projected copy of the shared mesh.
+TEST_F(TextureUpload, PlanarProjectionShowsTheImageOnASphere) {
+  Scene scene = quadrantScene();
+  Object ball = scene.objects[0];
+  ball.mesh = scene.addMesh(makeUvSphere(1.0f, 32, 16));
+  ball.material.uvProjection = UvProjection::Planar;
+  scene.objects = {ball};
+  ImageU8 image = render(scene, {32, 32, ShadingModel::Phong, 1});
+  EXPECT_EQ(image.at(10, 10), glm::u8vec4(255, 0, 0, 255));
+  EXPECT_EQ(image.at(21, 10), glm::u8vec4(0, 255, 0, 255));
+  EXPECT_EQ(image.at(10, 21), glm::u8vec4(0, 0, 255, 255));
+  EXPECT_EQ(image.at(21, 21), glm::u8vec4(255, 255, 255, 255));
+  scene.objects.push_back(scene.objects[0]);
+  scene.objects[1].material.uvProjection = UvProjection::Mesh;
+  GpuScene gpuScene = uploadScene(context(), scene);
+  EXPECT_NE(gpuScene.draws[0].vertexOffset, gpuScene.draws[1].vertexOffset);
 }
 
 }  // namespace
