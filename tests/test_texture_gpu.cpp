@@ -2,6 +2,7 @@
 // (every level read back at its expected size with the validation layer
 // watching), sRGB-correct averages in the last level, and samplers created
 // once per description.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -152,6 +153,47 @@ TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
   EXPECT_EQ(image.at(24, 8), glm::u8vec4(0, 255, 0, 255));
   EXPECT_EQ(image.at(8, 24), glm::u8vec4(0, 0, 255, 255));
   EXPECT_EQ(image.at(24, 24), glm::u8vec4(255, 255, 255, 255));
+}
+
+// Where a coordinate outside 0..1 lands (the Vulkan spec's wrap functions).
+float wrapped(TextureWrap wrap, float x) {
+  switch (wrap) {
+    case TextureWrap::Repeat: return x - std::floor(x);
+    case TextureWrap::ClampToEdge: return std::clamp(x, 0.0f, 0.999f);
+    case TextureWrap::MirroredRepeat: {
+      float m = x - 2.0f * std::floor(x / 2.0f);
+      return m < 1.0f ? m : 2.0f - m;
+    }
+  }
+  return x;
+}
+
+// The quadrant image tiled twice per axis with each wrap mode per axis: every
+// pixel must show the texel the wrap functions pick.
+TEST_F(TextureUpload, WrapModesApplyPerAxis) {
+  const std::pair<TextureWrap, TextureWrap> cases[] = {
+      {TextureWrap::Repeat, TextureWrap::Repeat},
+      {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat},
+      {TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge}};
+  const glm::u8vec4 texels[2][2] = {{{255, 0, 0, 255}, {0, 255, 0, 255}},
+                                    {{0, 0, 255, 255}, {255, 255, 255, 255}}};
+  for (auto [wrapU, wrapV] : cases) {
+    Scene scene = quadrantScene();
+    Material& material = scene.objects[0].material;
+    material.uvScale = glm::vec2(2.0f);
+    material.diffuseMap.sampler.wrapU = wrapU;
+    material.diffuseMap.sampler.wrapV = wrapV;
+    ImageU8 image = render(scene, {32, 32, ShadingModel::Phong, 1});
+    uint32_t wrong = 0;
+    for (uint32_t y = 0; y < 32; ++y)
+      for (uint32_t x = 0; x < 32; ++x) {
+        float s = 2.0f * (float(x) + 0.5f) / 32.0f;
+        float t = 1.0f - 2.0f * (1.0f - (float(y) + 0.5f) / 32.0f);  // t = 1 - v * scale
+        int column = int(wrapped(wrapU, s) * 2.0f), row = int(wrapped(wrapV, t) * 2.0f);
+        wrong += image.at(x, y) != texels[row][column];
+      }
+    EXPECT_EQ(wrong, 0u) << "wrap u " << int(wrapU) << ", v " << int(wrapV);
+  }
 }
 
 // A planar S-mapping projects the image along -z: a sphere seen from +z shows
