@@ -159,14 +159,40 @@ TEST_F(Viewer, SplitScreenMatchesHeadlessSplitAndReportsErrors) {
 }
 
 TEST_F(Viewer, UnavailableFeaturesSaySo) {
-  CommandResult r = view("key B\nkey E\nkey F\nkey M\nkey A\nframes 1\n");
+  CommandResult r = view("key E\nkey A\nframes 1\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* feature : {"bump mapping", "environment mapping", "texture filtering",
-                              "mip-level tint", "automatic tessellation"})
+  for (const char* feature : {"environment mapping", "automatic tessellation"})
     EXPECT_NE(r.output.find(std::string(feature) + ": not available in this build"),
               std::string::npos)
         << feature << "\n"
         << r.output;
+}
+
+TEST_F(Viewer, TextureKeysMatchHeadlessRendersWithTheSameOptions) {
+  CommandResult bump = view("key O\nkey B\nframes 2\nscreenshot flat-bump.png\n", "bump");
+  ASSERT_EQ(bump.exitCode, 0) << bump.output;
+  CommandResult mip = view(
+      "key O\nkey F\nframes 2\nscreenshot nearest.png\nkey F\nkey F\nkey M\n"
+      "frames 2\nscreenshot tint.png\n",
+      "mip-plane");
+  ASSERT_EQ(mip.exitCode, 0) << mip.output;
+  EXPECT_NE(mip.output.find("texture filter: nearest"), std::string::npos) << mip.output;
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong, 1};
+  settings.textures.bump = false;
+  ImageU8 flatBump = readImageU8(path("flat-bump.png"));
+  EXPECT_TRUE(matchesImage(render(builtinScene("bump"), settings), flatBump));
+  settings.textures.bump = true;  // must-fail twin: bump mapping on looks different
+  EXPECT_FALSE(matchesImage(render(builtinScene("bump"), settings), flatBump));
+
+  settings.textures.filterOverride = TextureFilter::Nearest;
+  EXPECT_TRUE(
+      matchesImage(render(builtinScene("mip-plane"), settings), readImageU8(path("nearest.png"))));
+  settings.textures.filterOverride = TextureFilter::Trilinear;
+  settings.textures.mipTint = true;
+  ImageU8 tint = readImageU8(path("tint.png"));
+  EXPECT_TRUE(matchesImage(render(builtinScene("mip-plane"), settings), tint));
+  settings.textures.mipTint = false;
+  EXPECT_FALSE(matchesImage(render(builtinScene("mip-plane"), settings), tint));
 }
 
 TEST_F(Viewer, TessellationKeysMatchHeadlessRetessellatedScene) {

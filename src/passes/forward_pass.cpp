@@ -26,12 +26,25 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
   setLayout_ = DescriptorSetLayout(device, setLayout);
 
+  VkDescriptorSetLayoutBinding textureBindings[3];
+  for (uint32_t binding : {BINDING_DIFFUSE_MAP, BINDING_NORMAL_MAP, BINDING_HEIGHT_MAP})
+    textureBindings[binding] = {binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                VK_SHADER_STAGE_FRAGMENT_BIT};
+  VkDescriptorSetLayoutCreateInfo materialInfo{
+      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  materialInfo.bindingCount = 3;
+  materialInfo.pBindings = textureBindings;
+  VkDescriptorSetLayout materialLayout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(device, &materialInfo, nullptr, &materialLayout));
+  materialSetLayout_ = DescriptorSetLayout(device, materialLayout);
+
   VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                                     VK_SHADER_STAGE_FRAGMENT_BIT,
                                 0, sizeof(gpu::DrawConstants)};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout;
+  VkDescriptorSetLayout setLayouts[] = {setLayout, materialLayout};
+  layoutInfo.setLayoutCount = 2;
+  layoutInfo.pSetLayouts = setLayouts;
   layoutInfo.pushConstantRangeCount = 1;
   layoutInfo.pPushConstantRanges = &pushRange;
   VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -41,10 +54,14 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   vertex_ = loadShader(device, "forward.vert");
   flatGeometry_ = loadShader(device, "forward_flat.geom");
   fragment_ = loadShader(device, "forward.frag");
+  texturedVertex_ = loadShader(device, "forward_textured.vert");
+  texturedFlatGeometry_ = loadShader(device, "forward_textured_flat.geom");
+  texturedFragment_ = loadShader(device, "forward_textured.frag");
 }
 
 std::vector<std::string> ForwardPass::shaderNames() {
-  return {"forward.vert", "forward_flat.geom", "forward.frag"};
+  return {"forward.vert",          "forward_flat.geom",           "forward.frag",
+          "forward_textured.vert", "forward_textured_flat.geom", "forward_textured.frag"};
 }
 
 void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
@@ -52,20 +69,25 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
   vertex_ = createShaderModule(device, spirv.at("forward.vert"));
   flatGeometry_ = createShaderModule(device, spirv.at("forward_flat.geom"));
   fragment_ = createShaderModule(device, spirv.at("forward.frag"));
+  texturedVertex_ = createShaderModule(device, spirv.at("forward_textured.vert"));
+  texturedFlatGeometry_ = createShaderModule(device, spirv.at("forward_textured_flat.geom"));
+  texturedFragment_ = createShaderModule(device, spirv.at("forward_textured.frag"));
   pipelines_.clear();
 }
 
-void ForwardPass::prepare(LightLayout lights, uint32_t samples) {
-  auto add = [&](const VariantKey& key) {
-    if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-  };
+void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool textured) {
   for (int model = 0; model < kShadingModelCount; ++model)
-    add({ShadingModel(model), lights, samples, false});
-  if (context_.features().fillModeNonSolid) add({ShadingModel::Unlit, lights, samples, true});
+    for (bool variant : {false, true}) {
+      VariantKey key{ShadingModel(model), lights, samples, variant, false};
+      if ((!variant || textured) && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+    }
+  VariantKey wireframe{ShadingModel::Unlit, lights, samples, false, true};
+  if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
+    pipelines_[wireframe] = createPipeline(wireframe);
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples, wireframe] = key;
+  const auto& [model, lights, samples, textured, wireframe] = key;
   const AttachmentFormats& formats = formats_;
   struct {
     int32_t shadingModel;
@@ -93,10 +115,11 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
     info.pSpecializationInfo = &specialization;
     stages.push_back(info);
   };
-  addStage(VK_SHADER_STAGE_VERTEX_BIT, vertex_);
+  addStage(VK_SHADER_STAGE_VERTEX_BIT, textured ? texturedVertex_ : vertex_);
   // Flat shading needs the whole triangle to find its geometric normal.
-  if (model == ShadingModel::Flat) addStage(VK_SHADER_STAGE_GEOMETRY_BIT, flatGeometry_);
-  addStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment_);
+  if (model == ShadingModel::Flat)
+    addStage(VK_SHADER_STAGE_GEOMETRY_BIT, textured ? texturedFlatGeometry_ : flatGeometry_);
+  addStage(VK_SHADER_STAGE_FRAGMENT_BIT, textured ? texturedFragment_ : fragment_);
 
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   // Only the attributes the shaders read: lavapipe fetches every declared
@@ -107,12 +130,14 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   VkVertexInputAttributeDescription attributes[] = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+      {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
   };
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertexInput.vertexBindingDescriptionCount = 1;
   vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = uint32_t(std::size(attributes));
+  vertexInput.vertexAttributeDescriptionCount = textured ? 4 : 2;
   vertexInput.pVertexAttributeDescriptions = attributes;
 
   VkPipelineInputAssemblyStateCreateInfo assembly{
@@ -179,25 +204,51 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
                          VkDescriptorSet frameSet, const GpuScene& scene,
                          const VkViewport& viewport) const {
-  bindAndDraw(cmd, {model, scene.lights, samples, false}, frameSet, scene, viewport, nullptr);
+  VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
+                   {uint32_t(viewport.width), uint32_t(viewport.height)}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  auto plain = pipelines_.find({model, scene.lights, samples, false, false});
+  auto textured = pipelines_.find({model, scene.lights, samples, true, false});
+  assert(plain != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, plain->second);
+  bool texturedBound = false;
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
+                          nullptr);
+  VkDeviceSize offset = 0;
+  VkBuffer vertexBuffer = scene.vertices.get();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+  vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+  VkDescriptorSet materialSet = VK_NULL_HANDLE;
+  for (const DrawItem& draw : scene.draws) {
+    if (draw.textured != texturedBound) {
+      assert(textured != pipelines_.end() && "ForwardPass::prepare() not called with textured");
+      texturedBound = draw.textured;
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                        (texturedBound ? textured : plain)->second);
+    }
+    if (draw.textured && draw.materialSet != materialSet) {
+      assert(draw.materialSet != VK_NULL_HANDLE && "textured draw without its material set");
+      materialSet = draw.materialSet;
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &materialSet,
+                              0, nullptr);
+    }
+    vkCmdPushConstants(cmd, layout_,
+                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
+                           VK_SHADER_STAGE_FRAGMENT_BIT,
+                       0, sizeof(draw.constants), &draw.constants);
+    vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+  }
 }
 
 void ForwardPass::recordWireframe(VkCommandBuffer cmd, uint32_t samples, VkDescriptorSet frameSet,
                                   const GpuScene& scene, const VkViewport& viewport) const {
   if (!context_.features().fillModeNonSolid) return;
-  const glm::vec4 lineColor{0.9f, 0.9f, 0.9f, 1.0f};  // unlit writes kd: the line colour
-  bindAndDraw(cmd, {ShadingModel::Unlit, scene.lights, samples, true}, frameSet, scene, viewport,
-              &lineColor);
-}
-
-void ForwardPass::bindAndDraw(VkCommandBuffer cmd, const VariantKey& key, VkDescriptorSet frameSet,
-                              const GpuScene& scene, const VkViewport& viewport,
-                              const glm::vec4* lineColor) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find(key);
+  auto pipeline = pipelines_.find({ShadingModel::Unlit, scene.lights, samples, false, true});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
@@ -207,8 +258,9 @@ void ForwardPass::bindAndDraw(VkCommandBuffer cmd, const VariantKey& key, VkDesc
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
   for (const DrawItem& draw : scene.draws) {
+    // Unlit writes kd: every edge in one light grey, textured or not.
     gpu::DrawConstants constants = draw.constants;
-    if (lineColor) constants.kd = *lineColor;
+    constants.kd = glm::vec4(0.9f, 0.9f, 0.9f, 1.0f);
     vkCmdPushConstants(cmd, layout_,
                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                            VK_SHADER_STAGE_FRAGMENT_BIT,

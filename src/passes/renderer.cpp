@@ -33,7 +33,9 @@ ImageRgba unpackHalfImage(const void* data, uint32_t width, uint32_t height) {
 }
 
 Renderer::Renderer(const Context& context)
-    : context_(context), forward_(context, {kColorFormat, kDepthFormat}) {
+    : context_(context),
+      forward_(context, {kColorFormat, kDepthFormat}),
+      textures_(context, forward_.materialSetLayout()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -190,6 +192,13 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
   vkCmdBeginRendering(cmd, &rendering);
 }
 
+GpuScene Renderer::upload(const Scene& scene, const TextureOptions& textures) {
+  context_.waitIdle();
+  GpuScene gpuScene = uploadScene(context_, scene);
+  textures_.upload(scene, gpuScene, textures);
+  return gpuScene;
+}
+
 void Renderer::prepare(const GpuScene& scene, const RenderSettings& settings) {
   uint32_t maxSize = context_.properties().limits.maxImageDimension2D;
   if (settings.width == 0 || settings.height == 0 || settings.width > maxSize ||
@@ -201,7 +210,9 @@ void Renderer::prepare(const GpuScene& scene, const RenderSettings& settings) {
     throw InputError("msaa " + std::to_string(settings.msaaSamples) + ": expected 1 or 4");
   if (settings.splitModels.size() > settings.width)
     throw InputError("split screen: more views than pixel columns");
-  forward_.prepare(scene.lights, settings.msaaSamples);
+  bool textured = std::any_of(scene.draws.begin(), scene.draws.end(),
+                              [](const DrawItem& draw) { return draw.textured; });
+  forward_.prepare(scene.lights, settings.msaaSamples, textured);
   ensureTarget(settings.width, settings.height, settings.msaaSamples);
 }
 
@@ -310,7 +321,7 @@ void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>&
 
 RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& settings) {
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
-  GpuScene gpuScene = uploadScene(context_, scene);
+  GpuScene gpuScene = upload(scene, settings.textures);
   prepare(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);

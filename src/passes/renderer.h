@@ -16,6 +16,7 @@
 #include "core/scene.h"
 #include "core/shading.h"
 #include "passes/forward_pass.h"
+#include "passes/scene_textures.h"
 
 namespace shadelab {
 
@@ -29,6 +30,7 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  TextureOptions textures;  // --filter override, --bump, --mip-tint
   bool wireframe = false;  // triangle edges drawn over the shaded image (needs fillModeNonSolid)
 };
 
@@ -69,8 +71,12 @@ class Renderer {
   RenderResult renderToImage(const Scene& scene, const RenderSettings& settings);
 
   // The steps renderToImage is made of, for front ends that own the loop (the
-  // viewer): waitForFrame, beginFrame, recordScene, optional recordReadback
-  // and commands of their own on commandBuffer(), submitFrame.
+  // viewer): upload once, then per frame waitForFrame, beginFrame,
+  // recordScene, optional recordReadback and commands of their own on
+  // commandBuffer(), submitFrame.
+  // Geometry and textures (the options are applied at upload); waits for
+  // frames in flight, which may use the previous scene's textures.
+  GpuScene upload(const Scene& scene, const TextureOptions& textures);
   // Throws InputError for impossible settings; builds pipelines and target.
   void prepare(const GpuScene& scene, const RenderSettings& settings);
   // Waits for the oldest frame in flight and appends its timings to `stats`.
@@ -127,6 +133,7 @@ class Renderer {
 
   const Context& context_;
   ForwardPass forward_;
+  SceneTextures textures_;
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;
   uint64_t frameIndex_ = 0;  // frames begun; the slot is frameIndex_ % kFramesInFlight

@@ -78,6 +78,7 @@ class Viewer {
   void notAvailable(const std::string& feature);
   void setModel(ShadingModel model);
   void setTessellation(float scale);
+  void applyTextureOptions(const std::string& message);
   void reloadShaders();
   std::string nextScreenshotName() const;
 

@@ -8,6 +8,7 @@
 
 #include "core/glsl_compiler.h"
 #include "core/stats.h"
+#include "core/texture.h"
 #include "view/viewer.h"
 
 #define GLFW_INCLUDE_NONE
@@ -71,11 +72,33 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
       {'G', "G", "tessellation / 2", [](Viewer& v) { v.setTessellation(v.tessellation_ * 0.5f); }},
       {'A', "A", "automatic tessellation (screen-space error bound)",
        [](Viewer& v) { v.notAvailable("automatic tessellation"); }},
-      {'B', "B", "bump mapping", [](Viewer& v) { v.notAvailable("bump mapping"); }},
+      {'B', "B", "bump mapping (normal and height maps) on / off",
+       [](Viewer& v) {
+         v.settings_.textures.bump = !v.settings_.textures.bump;
+         v.applyTextureOptions(std::string("bump mapping ") +
+                               (v.settings_.textures.bump ? "on" : "off"));
+       }},
       {'E', "E", "environment mapping", [](Viewer& v) { v.notAvailable("environment mapping"); }},
-      {'F', "F", "texture filter: nearest, bilinear, trilinear, anisotropic",
-       [](Viewer& v) { v.notAvailable("texture filtering"); }},
-      {'M', "M", "mip-level tint", [](Viewer& v) { v.notAvailable("mip-level tint"); }},
+      {'F', "F", "texture filter: materials' own, nearest, bilinear, trilinear, aniso",
+       [](Viewer& v) {
+         std::optional<TextureFilter>& filter = v.settings_.textures.filterOverride;
+         if (!filter)
+           filter = TextureFilter::Nearest;
+         else if (*filter == TextureFilter::Anisotropic)
+           filter.reset();
+         else
+           filter = TextureFilter(int(*filter) + 1);
+         std::string name = filter ? textureFilterName(*filter) : "each material's own";
+         // PLATFORM.md: llvmpipe can take tens of seconds a frame with anisotropy.
+         if (filter == TextureFilter::Anisotropic) name += " (can be very slow on llvmpipe)";
+         v.applyTextureOptions("texture filter: " + name);
+       }},
+      {'M', "M", "mip-level tint on / off",
+       [](Viewer& v) {
+         v.settings_.textures.mipTint = !v.settings_.textures.mipTint;
+         v.applyTextureOptions(std::string("mip-level tint ") +
+                               (v.settings_.textures.mipTint ? "on" : "off"));
+       }},
       {'R', "R", "reload shaders from disk", [](Viewer& v) { v.reloadShaders(); }},
       {'P', "P", "screenshot of the presented frame (PNG)",
        [](Viewer& v) { v.screenshotRequest_ = v.nextScreenshotName(); }},
@@ -116,12 +139,19 @@ void Viewer::setTessellation(float scale) {
   if (clamped == tessellation_) return say("tessellation already at its limit");
   tessellation_ = clamped;
   scene_.retessellate(tessellation_);
-  context_.waitIdle();  // frames in flight still read the old buffers
-  gpuScene_ = uploadScene(context_, scene_);
+  gpuScene_ = renderer_.upload(scene_, settings_.textures);  // waits for frames in flight
   char text[96];
   std::snprintf(text, sizeof(text), "tessellation x%g: %s triangles", double(tessellation_),
                 withThousands(gpuScene_.triangles).c_str());
   say(text);
+}
+
+// The texture options are baked into the material sets at upload.
+void Viewer::applyTextureOptions(const std::string& message) {
+  gpuScene_ = renderer_.upload(scene_, settings_.textures);
+  bool textured = std::any_of(gpuScene_.draws.begin(), gpuScene_.draws.end(),
+                              [](const DrawItem& draw) { return draw.textured; });
+  say(textured ? message : message + " (no textured material in this scene)");
 }
 
 void Viewer::reloadShaders() {
@@ -167,8 +197,12 @@ OverlayText Viewer::overlayText() const {
                             ? "model " + std::string(shadingModelName(settings_.shadingModel))
                             : "split " + models);
   char line[128];
-  std::snprintf(line, sizeof(line), "tessellation x%g  wireframe %s", double(tessellation_),
-                settings_.wireframe ? "on" : "off");
+  const TextureOptions& textures = settings_.textures;
+  std::snprintf(
+      line, sizeof(line), "tessellation x%g  wireframe %s  bump %s  filter %s  mip tint %s",
+      double(tessellation_), settings_.wireframe ? "on" : "off", textures.bump ? "on" : "off",
+      textures.filterOverride ? textureFilterName(*textures.filterOverride) : "own",
+      textures.mipTint ? "on" : "off");
   text.status.push_back(line);
   for (const auto& [model, difference] : splitErrors_) {
     std::snprintf(line, sizeof(line), "%-12s vs phong: RMSE %5.2f  PSNR %5.1f dB",
