@@ -267,10 +267,10 @@ bool Viewer::drawFrame() {
     swapchainStale_ = true;
     return false;
   }
-  if (status == SwapchainStatus::Suboptimal) {
+  if (status == SwapchainStatus::Suboptimal) {  // draw this one, then rebuild
     ++suboptimal_;
     swapchainStale_ = true;
-  }  // draw this one, then rebuild
+  }
 
   VkExtent2D extent = swapchain_.extent();
   settings_.width = extent.width;
