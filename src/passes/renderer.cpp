@@ -72,7 +72,7 @@ void Renderer::createFrame(Frame& frame) {
 
   VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  queryInfo.queryCount = 2;
+  queryInfo.queryCount = 3;  // scene start, scene end, end of the command buffer
   VkQueryPool queries = VK_NULL_HANDLE;
   VK_CHECK(vkCreateQueryPool(device, &queryInfo, nullptr, &queries));
   frame.timestamps = QueryPool(device, queries);
@@ -140,12 +140,13 @@ void Renderer::retire(Frame& frame, RenderStats& stats) {
   VkFence fence = frame.fence;
   VK_CHECK(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
   double completion = nowMs();
-  uint64_t ticks[2] = {};
-  VK_CHECK(vkGetQueryPoolResults(context_.device(), frame.timestamps, 0, 2, sizeof(ticks), ticks,
+  uint64_t ticks[3] = {};
+  VK_CHECK(vkGetQueryPoolResults(context_.device(), frame.timestamps, 0, 3, sizeof(ticks), ticks,
                                  sizeof(uint64_t),
                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   double period = context_.properties().limits.timestampPeriod;  // ns per tick
   stats.deviceMs.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
+  stats.frameDeviceMs.push_back(double(ticks[2] - ticks[0]) * period * 1e-6);
   stats.wallMs.push_back(completion - lastCompletion_);
   lastCompletion_ = completion;
   frame.pending = false;
@@ -246,7 +247,7 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
 
   VkCommandBuffer cmd = frame.cmd;
-  vkCmdResetQueryPool(cmd, frame.timestamps, 0, 2);
+  vkCmdResetQueryPool(cmd, frame.timestamps, 0, 3);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, frame.timestamps, 0);
 
   beginRendering(cmd, source, width, height);
@@ -283,6 +284,7 @@ void Renderer::recordReadback(const Buffer& readback) {
 
 void Renderer::submitFrame(const FrameSync& sync) {
   Frame& frame = frames_[frameIndex_ % kFramesInFlight];
+  vkCmdWriteTimestamp2(frame.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 2);
   VK_CHECK(vkEndCommandBuffer(frame.cmd));
   VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
   cmdInfo.commandBuffer = frame.cmd;

@@ -36,6 +36,9 @@ struct RenderSettings {
 
 struct RenderStats {
   std::vector<double> deviceMs;  // per frame, from GPU timestamps around the frame's commands
+  // Per frame, from the scene's start to the end of everything recorded after
+  // it (a readback; the viewer's blit, overlay and screenshot copy).
+  std::vector<double> frameDeviceMs;
   std::vector<double> wallMs;    // per frame, interval between successive frame completions
   uint64_t triangles = 0;        // submitted per frame
   uint32_t drawCalls = 0;

@@ -134,10 +134,13 @@ void Viewer::run() {
   renderer_.finishFrames(stats);
   for (SlotWork& work : slotWork_) finishSlotWork(work);
   std::vector<double> device(deviceMs_.begin(), deviceMs_.end());
+  std::vector<double> frameDevice(frameDeviceMs_.begin(), frameDeviceMs_.end());
   std::vector<double> wall(wallMs_.begin(), wallMs_.end());
-  std::printf("view: %llu frames; median of the last %zu: %.3f ms device (scene), %.3f ms wall\n",
-              static_cast<unsigned long long>(framesDrawn_), device.size(), median(device),
-              median(wall));
+  std::printf(
+      "view: %llu frames; median of the last %zu: %.3f ms device (scene), %.3f ms device "
+      "(frame), %.3f ms wall\n",
+      static_cast<unsigned long long>(framesDrawn_), device.size(), median(device),
+      median(frameDevice), median(wall));
   std::printf("view: swapchain built %u times (%u out of date, %u suboptimal)\n", swapchainBuilds_,
               outOfDate_, suboptimal_);
 }
@@ -257,6 +260,7 @@ bool Viewer::drawFrame() {
   RenderStats stats;
   renderer_.waitForFrame(stats);
   pushBounded(deviceMs_, stats.deviceMs);
+  pushBounded(frameDeviceMs_, stats.frameDeviceMs);
   pushBounded(wallMs_, stats.wallMs);
   finishSlotWork(slotWork_[slot]);
 

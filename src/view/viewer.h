@@ -107,7 +107,7 @@ class Viewer {
   std::optional<MouseButton> dragging_;
   glm::vec2 lastMouse_{0.0f};
 
-  std::deque<double> deviceMs_, wallMs_;  // the last 120 frames
+  std::deque<double> deviceMs_, frameDeviceMs_, wallMs_;  // the last 120 frames
   uint64_t framesDrawn_ = 0;
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;
   std::vector<std::pair<ShadingModel, ImageDifference>> splitErrors_;

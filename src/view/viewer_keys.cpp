@@ -183,11 +183,13 @@ OverlayText Viewer::overlayText() const {
   text.status.push_back(scene_.name + "  " + std::to_string(extent.width) + "x" +
                         std::to_string(extent.height) + "  present " +
                         presentModeName(swapchain_.presentMode()));
-  // Device time covers the scene's commands (what `render --frames` reports);
-  // wall time is the interval between presented frames.
-  text.status.push_back("scene " + formatMs(median(device)) + " device, frame " +
-                        formatMs(median(wall)) + " wall (medians of " +
-                        std::to_string(device.size()) + ")");
+  // Device time of the scene alone (what `render --frames` reports) and of
+  // the whole frame (blit, overlay, screenshot copy too); wall time is the
+  // interval between presented frames.
+  std::vector<double> frameDevice(frameDeviceMs_.begin(), frameDeviceMs_.end());
+  text.status.push_back("device: scene " + formatMs(median(device)) + ", frame " +
+                        formatMs(median(frameDevice)) + "; wall " + formatMs(median(wall)) +
+                        " (medians of " + std::to_string(device.size()) + ")");
   text.status.push_back("triangles " + withThousands(gpuScene_.triangles * views) +
                         (views > 1 ? " (" + std::to_string(views) + " views)" : ""));
   std::string models;
