@@ -13,6 +13,7 @@
 #include "core/files.h"
 #include "core/scene_loader.h"
 #include "passes/benchmark.h"
+#include "passes/zfight.h"
 
 namespace shadelab {
 namespace {
@@ -27,6 +28,9 @@ struct BenchCommandOptions {
   std::vector<uint32_t> msaa{1};
   uint32_t frames = 120;
   uint32_t rounds = 3;
+  std::string sweep;  // "settings" or "depth"; empty: depth for the zfight scene
+  std::vector<float> nearPlanes{0.001f, 0.01f, 0.1f, 1.0f, 10.0f};
+  bool sizeGiven = false;
 };
 
 // Creates DIR if needed (its parent must exist); throws InputError naming it.
@@ -43,7 +47,48 @@ void prepareOutputFolder(const fs::path& folder) {
     throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
+// The depth sweep: z-fighting per depth mode, projection and near plane.
+int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& global) {
+  if (!options.scene.empty() && options.scene != "zfight")
+    throw InputError("--sweep depth: measures the built-in zfight scene, not '" + options.scene +
+                     "'");
+  Size size = parseSize(options.sizeGiven ? options.size : "640x360", "--size");
+  prepareOutputFolder(options.output);
+  std::unique_ptr<Context> context = openContext(global);
+  std::vector<ZFightMeasurement> results;
+  {
+    Renderer renderer(*context);
+    std::fprintf(stderr, "bench zfight: %zu near planes x 4 depth modes x 2 projections at %ux%u\n",
+                 options.nearPlanes.size(), size.width, size.height);
+    results = runZFightSweep(renderer, options.nearPlanes, size.width, size.height,
+                             [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
+  }
+  fs::path csv = fs::path(options.output) / "zfight.csv";
+  fs::path chart = fs::path(options.output) / "zfight.png";
+  writeTextFile(csv, zfightCsv(results, size.width, size.height));
+  writeImage(zfightChart(results), chart);
+
+  std::printf("pixels where the farther plane wins (%%), planes %g apart\n", kZFightGap);
+  std::printf("%-13s %9s", "projection", "near");
+  for (DepthMode depth : kDepthModes) std::printf(" %9s", std::string(depthModeName(depth)).c_str());
+  std::printf("\n");
+  for (size_t row = 0; row < results.size(); row += kDepthModes.size() * options.nearPlanes.size())
+    for (size_t n = 0; n < options.nearPlanes.size(); ++n) {
+      std::printf("%-13s %9g", row == 0 ? "perspective" : "orthographic", options.nearPlanes[n]);
+      for (size_t d = 0; d < kDepthModes.size(); ++d)
+        std::printf(" %9.2f", 100.0 * results[row + d * options.nearPlanes.size() + n].wrongFraction());
+      std::printf("\n");
+    }
+  std::printf("wrote %s and %s\n", csv.c_str(), chart.c_str());
+  return finishWithValidation(*context, 0);
+}
+
 int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
+  std::string sweep = options.sweep.empty() ? (options.scene == "zfight" ? "depth" : "settings")
+                                            : options.sweep;
+  if (sweep == "depth") return runDepthSweep(options, global);
+  if (sweep != "settings")
+    throw InputError("--sweep '" + options.sweep + "': expected settings or depth");
   Size size = parseSize(options.size, "--size");
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
   Scene scene = loadScene(options.scene);
@@ -98,7 +143,18 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
                       "Built-in scene name or scene file (default: the built-in default scene)");
   command->add_option("-o,--output", options->output, "Folder for results.csv (created if needed)")
       ->required();
-  command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT (depth sweep: 640x360)")
+      ->capture_default_str()
+      ->each([options](const std::string&) { options->sizeGiven = true; });
+  command->add_option("--sweep", options->sweep,
+                      "settings: shading model x tessellation x MSAA (the default); depth: "
+                      "z-fighting per depth mode, projection and near plane (the default for "
+                      "the zfight scene)");
+  command->add_option("--near", options->nearPlanes,
+                      "Depth sweep: near-plane distances, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   command->add_option("--modes", options->modes,
                       "Shading models to measure; unlit is the constant-colour floor")
       ->capture_default_str();

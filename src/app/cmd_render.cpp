@@ -20,6 +20,7 @@ struct RenderOptions {
   uint32_t frames = 1;
   float tessellation = 1.0f;
   uint32_t msaa = 1;
+  std::string depth = "d32f";
 };
 
 void printTimings(const RenderStats& stats) {
@@ -39,6 +40,7 @@ void printTimings(const RenderStats& stats) {
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   ShadingModel model = parseShadingModelOption(options.mode, "--mode");
+  DepthMode depth = parseDepthModeOption(options.depth, "--depth");
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   if (options.tessellation != 1.0f) scene.retessellate(options.tessellation);
@@ -49,6 +51,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     Renderer renderer(*context);
     RenderSettings settings{size.width, size.height, model, options.frames};
     settings.msaaSamples = options.msaa;
+    settings.depth = depth;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -86,6 +89,10 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
+  command->add_option("--depth", options->depth,
+                      "Depth buffer: d16 (D16_UNORM), d24 (X8_D24_UNORM_PACK32), d32f "
+                      "(D32_SFLOAT), reversed (D32_SFLOAT, near -> 1, far -> 0)")
+      ->capture_default_str();
   return [options, &global] { return runRender(*options, global); };
 }
 

@@ -27,6 +27,7 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
 };
 
 struct RenderStats {
@@ -45,7 +46,6 @@ class Renderer {
  public:
   static constexpr uint32_t kFramesInFlight = 2;
   static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // linear, HDR
-  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
   explicit Renderer(const Context& context);
   ~Renderer();
@@ -74,12 +74,14 @@ class Renderer {
     ImageUse colorUse = ImageUse::Undefined;
     ImageUse depthUse = ImageUse::Undefined;
     ImageUse multisampledUse = ImageUse::Undefined;
-    uint32_t samples = 1;
+    TargetLayout layout;
   };
 
   void createFrame(Frame& frame);
   void ensureObjectCapacity(Frame& frame, uint32_t count);
-  void ensureTarget(uint32_t width, uint32_t height, uint32_t samples);
+  // Throws InputError when the device cannot use the depth format as an attachment.
+  void checkDepthSupport(DepthMode mode) const;
+  void ensureTarget(uint32_t width, uint32_t height, TargetLayout layout);
   void beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width, uint32_t height);
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
