@@ -41,7 +41,7 @@ Rect textRect(const std::string& text, int size, int x, int baseline) {
 
 std::string tickText(double value) {
   char text[32];
-  if (value != 0.0 && (std::abs(value) >= 1e5 || std::abs(value) < 1e-3))
+  if (value != 0.0 && (std::abs(value) >= 1e7 || std::abs(value) < 1e-3))
     std::snprintf(text, sizeof text, "%.0e", value);
   else
     std::snprintf(text, sizeof text, "%g", value);
@@ -68,10 +68,17 @@ std::pair<double, double> axisRange(const ChartAxis& axis, double low, double hi
   if (axis.scale == AxisScale::Log) {
     low = std::max(low, 1e-12);
     high = std::max(high, low);
-    double lowDecade = std::pow(10.0, std::floor(std::log10(low)));
-    double highDecade = std::pow(10.0, std::ceil(std::log10(high)));
-    if (highDecade <= lowDecade) highDecade = lowDecade * 10.0;
-    return {axis.min.value_or(lowDecade), axis.max.value_or(highDecade)};
+    // The nearest 1, 2 or 5 times a power of ten outside the data.
+    double lowPower = std::pow(10.0, std::floor(std::log10(low)));
+    double lowTick = lowPower;
+    for (double step : {2.0, 5.0})
+      if (step * lowPower <= low) lowTick = step * lowPower;
+    double highPower = std::pow(10.0, std::floor(std::log10(high)));
+    double highTick = 10.0 * highPower;
+    for (double step : {5.0, 2.0, 1.0})
+      if (step * highPower >= high) highTick = step * highPower;
+    if (highTick <= lowTick) highTick = lowTick * 10.0;
+    return {axis.min.value_or(lowTick), axis.max.value_or(highTick)};
   }
   if (low > 0.0 && low < 0.5 * high) low = 0.0;  // start from zero when that costs little room
   if (high <= low) high = low + 1.0;
@@ -137,12 +144,6 @@ void drawAxes(OIIO::ImageBuf& image, const Chart& chart, const Mapping& mx, cons
   drawText(image, plotLeft, 38, chart.subtitle, kTickSize, kInk);
 }
 
-// Earlier series get larger marks, so where series coincide the ones
-// underneath still show round the edge.
-double markerSize(size_t seriesIndex) {
-  return std::max(2.5, 6.0 - 1.0 * double(seriesIndex));
-}
-
 void drawLegend(OIIO::ImageBuf& image, const Chart& chart, int left, int top) {
   int y = top + 8;
   OIIO::ROI all = image.roi();
@@ -151,7 +152,7 @@ void drawLegend(OIIO::ImageBuf& image, const Chart& chart, int left, int top) {
     if (series.name.empty()) continue;
     float color[4] = {series.color.r, series.color.g, series.color.b, 1.0f};
     if (series.connect) drawThickLine(image, left, y, left + 22, y, color, all);
-    drawMarker(image, series.marker, left + 11, y, markerSize(i), color, all);
+    drawMarker(image, series.marker, left + 11, y, series.markerSize, color, all);
     drawText(image, left + 30, y, series.name, kTickSize, kInk, IBA::TextAlignX::Left,
              IBA::TextAlignY::Center);
     y += 20;
@@ -184,11 +185,17 @@ void drawChartInto(OIIO::ImageBuf& image, const Chart& chart, int originX, int w
       drawThickLine(image, mx(series.points[i].x), my(series.points[i].y),
                     mx(series.points[i + 1].x), my(series.points[i + 1].y), color, clip);
     for (const ChartPoint& p : series.points)
-      drawMarker(image, series.marker, mx(p.x), my(p.y), markerSize(s), color, clip);
+      drawMarker(image, series.marker, mx(p.x), my(p.y), series.markerSize, color, clip);
   }
   // Labels go right, left, above or below their point, wherever they overlap
   // nothing placed before; a label with no free spot is left out.
   std::vector<Rect> taken;
+  for (const ChartSeries& series : chart.series)
+    for (const ChartPoint& p : series.points) {
+      int x = int(std::lround(mx(p.x))), y = int(std::lround(my(p.y)));
+      int r = int(std::ceil(series.markerSize)) - 1;
+      if (series.marker == Marker::Dot) taken.push_back({x - r, y - r, x + r, y + r});
+    }
   Rect bounds{plotLeft + 2, plotTop + 2, plotRight - 2, plotBottom - 2};
   for (const ChartSeries& series : chart.series)
     for (const ChartPoint& p : series.points) {

@@ -25,6 +25,7 @@ struct ChartSeries {
   std::vector<ChartPoint> points;
   bool connect = false;  // a line through the points in order
   Marker marker = Marker::Dot;
+  double markerSize = 4.0;  // radius in pixels
 };
 
 enum class AxisScale { Linear, Log };

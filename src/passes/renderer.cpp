@@ -280,6 +280,7 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   RenderResult result;
   result.stats.triangles = gpuScene.triangles;
   result.stats.drawCalls = uint32_t(gpuScene.draws.size());
+  result.stats.deviceMemoryBytes = deviceMemoryInUse();
   double lastCompletion = nowMs();
   for (uint32_t i = 0; i < settings.frames; ++i) {
     Frame& frame = frames_[i % kFramesInFlight];

@@ -35,6 +35,9 @@ struct RenderStats {
   std::vector<double> wallMs;    // per frame, interval between successive frame completions
   uint64_t triangles = 0;        // submitted per frame
   uint32_t drawCalls = 0;
+  // Device memory allocated in the process while the frames ran (target,
+  // meshes, per-frame buffers, readback), from resources.h's accounting.
+  uint64_t deviceMemoryBytes = 0;
 };
 
 struct RenderResult {
