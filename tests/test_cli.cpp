@@ -371,4 +371,11 @@ TEST_F(Cli, QualityWithModeIsAUsageError) {
   EXPECT_EQ(filesLeft(), 0u);
 }
 
+TEST_F(Cli, BenchFolderWithoutQualityIsAUsageError) {
+  CommandResult r = run("render -o " + out("q.png") + " --bench " + out("b"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--quality"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
 }  // namespace

@@ -186,21 +186,24 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                    "Depth buffer: d16 (D16_UNORM), d24 (X8_D24_UNORM_PACK32), d32f "
                    "(D32_SFLOAT), reversed (D32_SFLOAT, near -> 1, far -> 0)")
       ->capture_default_str();
-  command
-      ->add_option("--quality", options->quality,
-                   "Render with the cheapest model and tessellation whose error meets X in "
-                   "--metric units: an RMSE ceiling, or a PSNR floor in dB")
-      ->excludes(mode)
-      ->excludes(tess);
+  CLI::Option* quality =
+      command
+          ->add_option("--quality", options->quality,
+                       "Render with the cheapest model and tessellation whose error meets X in "
+                       "--metric units: an RMSE ceiling, or a PSNR floor in dB")
+          ->excludes(mode)
+          ->excludes(tess);
   command->add_option("--metric", options->metric, "Error metric of --quality: rmse or psnr")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->needs(quality);
+  command->add_option("--reference", options->reference, "What --quality measures against: raster")
+      ->capture_default_str()
+      ->needs(quality);
   command
-      ->add_option("--reference", options->reference,
-                   "What --quality measures error against: raster")
-      ->capture_default_str();
-  command->add_option("--bench", options->benchFolder,
-                      "--quality: choose from DIR/results.csv of an earlier bench run instead of "
-                      "a quick sweep");
+      ->add_option("--bench", options->benchFolder,
+                   "--quality: choose from DIR/results.csv of an earlier bench run instead of a "
+                   "quick sweep")
+      ->needs(quality);
   return [options, &global] { return runRender(*options, global); };
 }
 

@@ -80,7 +80,11 @@ ImageU8 zfightChart(const std::vector<ZFightMeasurement>& measurements) {
   for (Projection projection : {Projection::Perspective, Projection::Orthographic}) {
     Chart chart;
     chart.title = std::string("Z-fighting, ") + projectionName(projection) + " projection";
-    chart.subtitle = "two planes 0.05 apart, 80-230 units away; far plane at 10000";
+    char subtitle[96];
+    std::snprintf(subtitle, sizeof subtitle,
+                  "two planes %g apart, 80-230 units away; far plane at %g", kZFightGap,
+                  zfightScene(projection, 1.0f).camera.far);
+    chart.subtitle = subtitle;
     chart.x = {"near plane distance (log)", AxisScale::Log};
     chart.y = {"pixels where the farther plane wins (%)", AxisScale::Linear, 0.0, 100.0};
     for (DepthMode depth : kDepthModes) {
