@@ -111,12 +111,14 @@ int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& globa
   for (DepthMode depth : kDepthModes)
     std::printf(" %9s", std::string(depthModeName(depth)).c_str());
   std::printf("\n");
-  for (size_t row = 0; row < results.size(); row += kDepthModes.size() * options.nearPlanes.size())
-    for (size_t n = 0; n < options.nearPlanes.size(); ++n) {
-      std::printf("%-13s %9g", row == 0 ? "perspective" : "orthographic", options.nearPlanes[n]);
-      for (size_t d = 0; d < kDepthModes.size(); ++d)
-        std::printf(" %9.2f",
-                    100.0 * results[row + d * options.nearPlanes.size() + n].wrongFraction());
+  for (Projection projection : {Projection::Perspective, Projection::Orthographic})
+    for (float near : options.nearPlanes) {
+      std::printf("%-13s %9g",
+                  projection == Projection::Perspective ? "perspective" : "orthographic", near);
+      for (DepthMode depth : kDepthModes)
+        for (const ZFightMeasurement& m : results)
+          if (m.projection == projection && m.depth == depth && m.near == near)
+            std::printf(" %9.2f", 100.0 * m.wrongFraction());
       std::printf("\n");
     }
   std::printf("wrote %s and %s\n", csv.c_str(), chart.c_str());

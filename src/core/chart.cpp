@@ -68,15 +68,16 @@ std::pair<double, double> axisRange(const ChartAxis& axis, double low, double hi
   if (axis.scale == AxisScale::Log) {
     low = std::max(low, 1e-12);
     high = std::max(high, low);
-    // The nearest 1, 2 or 5 times a power of ten outside the data.
+    // The nearest 1, 2 or 5 times a power of ten outside the data, or within
+    // 1% inside it (the marks may overhang the frame a little).
     double lowPower = std::pow(10.0, std::floor(std::log10(low)));
     double lowTick = lowPower;
     for (double step : {2.0, 5.0})
-      if (step * lowPower <= low) lowTick = step * lowPower;
+      if (step * lowPower <= low * 1.01) lowTick = step * lowPower;
     double highPower = std::pow(10.0, std::floor(std::log10(high)));
     double highTick = 10.0 * highPower;
     for (double step : {5.0, 2.0, 1.0})
-      if (step * highPower >= high) highTick = step * highPower;
+      if (step * highPower >= high * 0.99) highTick = step * highPower;
     if (highTick <= lowTick) highTick = lowTick * 10.0;
     return {axis.min.value_or(lowTick), axis.max.value_or(highTick)};
   }

@@ -77,8 +77,8 @@ ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metri
   Chart chart;
   chart.title = title;
   chart.subtitle =
-      "one line per shading model and MSAA through the tessellation sweep "
-      "(t = tessellation factor)";
+      "one line per shading model and MSAA (rings: multisampled) through the tessellation "
+      "sweep (t = tessellation factor)";
   chart.y = {metric.description, AxisScale::Linear};
   std::map<std::pair<ShadingModel, uint32_t>, std::vector<size_t>> lines;
   double lowTriangles = 1e300, highTriangles = 0.0;
@@ -87,14 +87,16 @@ ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metri
     lowTriangles = std::min(lowTriangles, double(results[i].triangles));
     highTriangles = std::max(highTriangles, double(results[i].triangles));
   }
-  size_t colorIndex = 0;
   std::vector<uint64_t> labelled;  // each tessellation's column is labelled once
   for (auto& [key, members] : lines) {
     std::sort(members.begin(), members.end(),
               [&](size_t a, size_t b) { return results[a].triangles < results[b].triangles; });
     ChartSeries series;
     series.name = std::string(shadingModelName(key.first)) + " " + std::to_string(key.second) + "x";
-    series.color = chartColor(colorIndex++);
+    // Colours by model as in the time chart; multisampled lines get rings.
+    series.color = chartColor(size_t(key.first));
+    series.marker = key.second > 1 ? Marker::Ring : Marker::Dot;
+    series.markerSize = key.second > 1 ? 2.0 : 4.0;
     series.connect = true;
     for (size_t i : members) {
       char label[24] = "";
