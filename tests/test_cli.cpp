@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
+
 namespace {
 namespace fs = std::filesystem;
 
@@ -280,6 +282,26 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
   return rows;
 }
 
+// A chart decodes as a PNG, is mostly white paper, and has ink, grid and
+// series colours on it: more than a blank or single-colour image.
+void expectDrawnChart(const std::string& path) {
+  shadelab::ImageU8 image = shadelab::readImageU8(path);
+  size_t white = 0;
+  std::vector<uint32_t> colours;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) {
+      glm::u8vec4 p = image.at(x, y);
+      white += p == glm::u8vec4(255);
+      uint32_t packed = uint32_t(p.r) << 16 | uint32_t(p.g) << 8 | p.b;
+      if (colours.size() < 64 && std::find(colours.begin(), colours.end(), packed) == colours.end())
+        colours.push_back(packed);
+    }
+  double paper = double(white) / (double(image.width) * image.height);
+  EXPECT_GT(paper, 0.5) << path;
+  EXPECT_LT(paper, 0.99) << path;
+  EXPECT_GT(colours.size(), 8u) << path;
+}
+
 TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
   CommandResult r = run("bench zfight -o " + out("z") + " --size 160x90 --near 0.01,10");
   ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -296,6 +318,7 @@ TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
   auto [width, height] = pngSize(out("z/zfight.png"));
   EXPECT_GT(width, 1000u);
   EXPECT_GT(height, 300u);
+  expectDrawnChart(out("z/zfight.png"));
   EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
 }
 
@@ -323,8 +346,10 @@ TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   EXPECT_EQ(rows[1][3], "flat");
   EXPECT_EQ(rows[8][3], "phong");
   EXPECT_LT(std::stod(rows[8][15]), std::stod(rows[1][15]));
-  for (const char* chart : {"b/error_vs_time.png", "b/error_vs_triangles.png"})
+  for (const char* chart : {"b/error_vs_time.png", "b/error_vs_triangles.png"}) {
     EXPECT_EQ(pngSize(out(chart)), std::make_pair(1100u, 640u)) << chart;
+    expectDrawnChart(out(chart));
+  }
   EXPECT_NE(r.output.find("Pareto front"), std::string::npos) << r.output;
 }
 
