@@ -11,6 +11,7 @@
 #include "core/image.h"
 #include "core/scene_loader.h"
 #include "core/stats.h"
+#include "core/texture.h"
 #include "passes/quality.h"
 #include "passes/renderer.h"
 
@@ -25,12 +26,30 @@ struct RenderOptions {
   uint32_t frames = 1;
   float tessellation = 1.0f;
   uint32_t msaa = 1;
+  std::string filter;  // empty: each material's own sampler
+  std::string bump = "on";
+  bool mipTint = false;
   std::string depth = "d32f";
   std::optional<double> quality;  // a bound in `metric`'s units
   std::string metric = "rmse";
   std::string reference = "raster";
   std::string benchFolder;  // cached bench results; empty: a quick sweep
 };
+
+TextureOptions parseTextureOptions(const RenderOptions& options) {
+  TextureOptions textures;
+  if (!options.filter.empty()) {
+    textures.filterOverride = parseTextureFilter(options.filter);
+    if (!textures.filterOverride)
+      throw InputError("--filter '" + options.filter +
+                       "': expected one of nearest, bilinear, trilinear, aniso");
+  }
+  if (options.bump != "on" && options.bump != "off")
+    throw InputError("--bump '" + options.bump + "': expected on or off");
+  textures.bump = options.bump == "on";
+  textures.mipTint = options.mipTint;
+  return textures;
+}
 
 std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
                                                   const ErrorMetric& metric, uint32_t msaa) {
@@ -112,6 +131,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   DepthMode depth = parseDepthModeOption(options.depth, "--depth");
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
   const Reference& reference = findReference(options.reference, "--reference");
+  TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   std::vector<QualityCandidate> cached;
@@ -140,6 +160,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     RenderSettings settings{size.width, size.height, point.model, options.frames};
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
+    settings.textures = textures;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -204,6 +225,17 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                    "--quality: choose from DIR/results.csv of an earlier bench run instead of a "
                    "quick sweep")
       ->needs(quality);
+  command->add_option("--filter", options->filter,
+                      "Texture filter for every texture, overriding the materials' samplers: "
+                      "nearest (base level, no mipmaps), bilinear (nearest mip level), "
+                      "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
+  command
+      ->add_option("--bump", options->bump,
+                   "Bump mapping (normal and height maps; Phong and Blinn-Phong only): on, off")
+      ->capture_default_str();
+  command->add_flag("--mip-tint", options->mipTint,
+                    "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
+                    "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
   return [options, &global] { return runRender(*options, global); };
 }
 

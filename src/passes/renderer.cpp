@@ -32,7 +32,9 @@ ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
 }  // namespace
 
 Renderer::Renderer(const Context& context)
-    : context_(context), forward_(context, kColorFormat) {
+    : context_(context),
+      forward_(context, kColorFormat),
+      textures_(context, forward_.materialSetLayout()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -271,8 +273,11 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   checkDepthSupport(settings.depth);
 
   GpuScene gpuScene = uploadScene(context_, scene);
+  textures_.upload(scene, gpuScene, settings.textures);
+  bool textured = std::any_of(gpuScene.draws.begin(), gpuScene.draws.end(),
+                              [](const DrawItem& draw) { return draw.textured; });
   TargetLayout layout{settings.msaaSamples, settings.depth};
-  forward_.prepare(gpuScene.lights, layout);
+  forward_.prepare(gpuScene.lights, layout, textured);
   ensureTarget(settings.width, settings.height, layout);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);

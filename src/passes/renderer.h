@@ -14,6 +14,7 @@
 #include "core/scene.h"
 #include "core/shading.h"
 #include "passes/forward_pass.h"
+#include "passes/scene_textures.h"
 
 namespace shadelab {
 
@@ -27,6 +28,7 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  TextureOptions textures;  // --filter override, --bump, --mip-tint
   DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
 };
 
@@ -93,6 +95,7 @@ class Renderer {
 
   const Context& context_;
   ForwardPass forward_;
+  SceneTextures textures_;
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;
   Target target_;
