@@ -149,6 +149,18 @@ TEST(QualityChoice, CandidatesFromBenchKeepTheSceneSampleCountAndLitModels) {
                InputError);
 }
 
+TEST(QualityChoice, RowsOverridingTheTextureFilterAreNotCandidates) {
+  BenchTable table = parseBenchCsv(
+      "scene,mode,tessellation,msaa,filter,triangles,device_median_ms,rmse\n"
+      "spheres,flat,1,1,nearest,10,0.5,5\n"
+      "spheres,flat,1,1,material,10,1.0,4\n",
+      "r.csv");
+  std::vector<QualityCandidate> found =
+      candidatesFromBench(table, "r.csv", "spheres", findErrorMetric("rmse", "m"), 1);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_DOUBLE_EQ(found[0].costMs, 1.0);
+}
+
 TEST(DepthModes, NamesFormatsAndReversedZState) {
   EXPECT_EQ(depthModeNames(), (std::vector<std::string>{"d16", "d24", "d32f", "reversed"}));
   EXPECT_EQ(parseDepthMode("reversed"), DepthMode::ReversedZ);

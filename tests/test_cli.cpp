@@ -235,9 +235,10 @@ TEST_F(Cli, BenchWritesOneCsvRowPerSetting) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::string csv = readText(out("bench/results.csv"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;
-  EXPECT_EQ(csv.rfind("scene,width,height,mode,tessellation,msaa,triangles,frames,", 0), 0u) << csv;
+  EXPECT_EQ(csv.rfind("scene,width,height,mode,tessellation,msaa,filter,triangles,frames,", 0), 0u)
+      << csv;
   // 2 rounds x (4 frames - 1 warm-up) steady frames per setting.
-  EXPECT_NE(csv.find("spheres,64,36,phong,0.5,1,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("spheres,64,36,phong,0.5,1,material,"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",6,"), std::string::npos) << csv;
   EXPECT_NE(r.output.find("x floor"), std::string::npos) << r.output;
 }
@@ -360,7 +361,7 @@ TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
 }
 
 const std::vector<std::string> kBenchColumns = {
-    "scene", "width", "height", "mode", "tessellation", "msaa", "triangles", "frames",
+    "scene", "width", "height", "mode", "tessellation", "msaa", "filter", "triangles", "frames",
     "device_median_ms", "device_p95_ms", "wall_median_ms", "wall_p95_ms", "device_memory_mb",
     "peak_rss_mb", "reference", "rmse", "psnr"};
 
@@ -374,20 +375,38 @@ TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   EXPECT_EQ(rows[0], kBenchColumns);
   for (size_t i = 1; i < rows.size(); ++i) {
     ASSERT_EQ(rows[i].size(), kBenchColumns.size());
-    EXPECT_GT(std::stod(rows[i][12]), 0.0) << "device memory";
-    EXPECT_GE(std::stod(rows[i][15]), 0.0) << "rmse";
-    EXPECT_GT(std::stod(rows[i][16]), 10.0) << "psnr";
+    EXPECT_EQ(rows[i][6], "material");
+    EXPECT_GT(std::stod(rows[i][13]), 0.0) << "device memory";
+    EXPECT_GE(std::stod(rows[i][16]), 0.0) << "rmse";
+    EXPECT_GT(std::stod(rows[i][17]), 10.0) << "psnr";
   }
   // The reference is Phong at 4x tessellation and 4x MSAA, so finer and
   // multisampled Phong errs less than coarse flat.
   EXPECT_EQ(rows[1][3], "flat");
   EXPECT_EQ(rows[8][3], "phong");
-  EXPECT_LT(std::stod(rows[8][15]), std::stod(rows[1][15]));
+  EXPECT_LT(std::stod(rows[8][16]), std::stod(rows[1][16]));
   for (const char* chart : {"b/error_vs_time.png", "b/error_vs_triangles.png"}) {
     EXPECT_EQ(pngSize(out(chart)), std::make_pair(1100u, 640u)) << chart;
     expectDrawnChart(out(chart));
   }
   EXPECT_NE(r.output.find("Pareto front"), std::string::npos) << r.output;
+}
+
+// The texture filter is an axis too: on the receding checkerboard, nearest
+// sampling (no mipmaps) errs more against the trilinear reference.
+TEST_F(Cli, BenchSweepsTextureFilters) {
+  CommandResult r = run("bench mip-plane -o " + out("f") +
+                        " --size 96x54 --frames 3 --rounds 1 --modes phong --tess 1 --msaa 1 "
+                        "--filters nearest,trilinear");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("f/results.csv")));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[1][6], "nearest");
+  EXPECT_EQ(rows[2][6], "trilinear");
+  EXPECT_GT(std::stod(rows[1][16]), std::stod(rows[2][16])) << "rmse, nearest against trilinear";
+  CommandResult bad = run("bench -o " + out("g") + " --filters blurry");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--filters 'blurry'"), std::string::npos) << bad.output;
 }
 
 // With bench results given, the loosest bound picks the row the CSV says is cheapest.
@@ -401,7 +420,7 @@ TEST_F(Cli, QualityWithLooseBoundPicksTheCheapestBenchedSetting) {
   ASSERT_EQ(rows.size(), 7u);
   size_t cheapest = 1;
   for (size_t i = 2; i < rows.size(); ++i)
-    if (std::stod(rows[i][8]) < std::stod(rows[cheapest][8])) cheapest = i;
+    if (std::stod(rows[i][9]) < std::stod(rows[cheapest][9])) cheapest = i;
   std::string expected = "chose " + rows[cheapest][3] + " t" + rows[cheapest][4] + " 1x";
   CommandResult r = run("render default -o " + out("q.png") +
                         " --size 64x36 --quality 1000 --bench " + out("b"));

@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/errors.h"
 #include "core/files.h"
 #include "core/scene_loader.h"
+#include "core/texture.h"
 #include "passes/bench_charts.h"
 #include "passes/benchmark.h"
 #include "passes/zfight.h"
@@ -32,8 +35,9 @@ struct BenchCommandOptions {
   std::vector<uint32_t> msaa{1, 4};
   std::string reference = "raster";
   std::string metric = "rmse";
-  uint32_t frames = 120;
-  uint32_t rounds = 3;
+  std::string filters = "material";
+  uint32_t frames = 60;
+  uint32_t rounds = 2;
   std::string sweep;  // "settings" or "depth"; empty: depth for the zfight scene
   std::vector<float> nearPlanes{0.001f, 0.01f, 0.1f, 1.0f, 10.0f};
   bool sizeGiven = false;
@@ -53,28 +57,49 @@ void prepareOutputFolder(const fs::path& folder) {
     throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
+// "material,nearest" -> {none, Nearest}; throws InputError naming a bad entry.
+std::vector<std::optional<TextureFilter>> parseFilterList(const std::string& text) {
+  std::vector<std::optional<TextureFilter>> filters;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (item == "material") {
+      filters.push_back(std::nullopt);
+    } else if (std::optional<TextureFilter> filter = parseTextureFilter(item)) {
+      filters.push_back(filter);
+    } else {
+      throw InputError("--filters '" + item +
+                       "': expected material, nearest, bilinear, trilinear or aniso");
+    }
+  }
+  if (filters.empty()) throw InputError("--filters '" + text + "': expected at least one filter");
+  return filters;
+}
+
 // One line per setting: cost (with the multiple of the unlit floor), memory,
 // error; settings on the Pareto front are starred.
 void printResults(const std::vector<BenchResult>& results, const ErrorMetric& metric,
                   size_t metricIndex) {
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, metricIndex), metricIndex, metric);
-  std::printf("%-12s %5s %5s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess", "msaa", "triangles",
-              "median ms", "p95 ms", "x floor", "dev MB", "rss MB", metric.name.c_str());
+  std::printf("%-12s %5s %5s %-9s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess", "msaa",
+              "filter", "triangles", "median ms", "p95 ms", "x floor", "dev MB", "rss MB",
+              metric.name.c_str());
   for (size_t i = 0; i < results.size(); ++i) {
     const BenchResult& r = results[i];
     const BenchResult* floor = nullptr;
     for (const BenchResult& f : results)
       if (f.point.model == ShadingModel::Unlit && f.point.tessellation == r.point.tessellation &&
-          f.point.msaaSamples == r.point.msaaSamples)
+          f.point.msaaSamples == r.point.msaaSamples && f.point.filter == r.point.filter)
         floor = &f;
     char ratio[16] = "-";
     if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
     bool onFront = std::find(front.begin(), front.end(), i) != front.end();
-    std::printf("%-12s %5g %5u %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
+    std::printf("%-12s %5g %5u %-9s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
                 std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
-                r.point.msaaSamples, static_cast<unsigned long long>(r.triangles), r.deviceMedianMs,
-                r.deviceP95Ms, ratio, double(r.deviceMemoryBytes) / (1 << 20),
+                r.point.msaaSamples, benchFilterName(r.point.filter).c_str(),
+                static_cast<unsigned long long>(r.triangles), r.deviceMedianMs, r.deviceP95Ms,
+                ratio, double(r.deviceMemoryBytes) / (1 << 20),
                 double(r.peakResidentBytes) / (1 << 20),
                 metricIndex < r.errors.size() ? r.errors[metricIndex] : 0.0, onFront ? " *" : "");
   }
@@ -133,7 +158,7 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     throw InputError("--sweep '" + options.sweep + "': expected settings or depth");
   Size size = parseSize(options.size, "--size");
   BenchAxes axes{parseShadingModelList(options.modes, "--modes"), options.tessellations,
-                 options.msaa};
+                 options.msaa, parseFilterList(options.filters)};
   BenchOptions bench{size.width,
                      size.height,
                      options.frames,
@@ -211,6 +236,11 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
+  command
+      ->add_option("--filters", options->filters,
+                   "Texture filters, comma-separated: material (each material's own sampler), "
+                   "nearest, bilinear, trilinear, aniso (slow on llvmpipe)")
+      ->capture_default_str();
   command
       ->add_option("--reference", options->reference,
                    "What each setting's error is measured against: raster")

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 #include "core/chart.h"
 
@@ -80,10 +81,13 @@ ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metri
       "one line per shading model and MSAA (rings: multisampled) through the tessellation "
       "sweep (t = tessellation factor)";
   chart.y = {metric.description, AxisScale::Linear};
-  std::map<std::pair<ShadingModel, uint32_t>, std::vector<size_t>> lines;
+  // One line per (model, samples, filter): the tessellation sweep runs along it.
+  std::map<std::tuple<ShadingModel, uint32_t, std::string>, std::vector<size_t>> lines;
   double lowTriangles = 1e300, highTriangles = 0.0;
   for (size_t i : chartedResults(results, metricIndex)) {
-    lines[{results[i].point.model, results[i].point.msaaSamples}].push_back(i);
+    const BenchPoint& point = results[i].point;
+    lines[{point.model, point.msaaSamples, point.filter ? benchFilterName(point.filter) : ""}]
+        .push_back(i);
     lowTriangles = std::min(lowTriangles, double(results[i].triangles));
     highTriangles = std::max(highTriangles, double(results[i].triangles));
   }
@@ -92,11 +96,13 @@ ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metri
     std::sort(members.begin(), members.end(),
               [&](size_t a, size_t b) { return results[a].triangles < results[b].triangles; });
     ChartSeries series;
-    series.name = std::string(shadingModelName(key.first)) + " " + std::to_string(key.second) + "x";
+    const auto& [model, samples, filter] = key;
+    series.name = std::string(shadingModelName(model)) + " " + std::to_string(samples) + "x" +
+                  (filter.empty() ? "" : " " + filter);
     // Colours by model as in the time chart; multisampled lines get rings.
-    series.color = chartColor(size_t(key.first));
-    series.marker = key.second > 1 ? Marker::Ring : Marker::Dot;
-    series.markerSize = key.second > 1 ? 2.0 : 4.0;
+    series.color = chartColor(size_t(model));
+    series.marker = samples > 1 ? Marker::Ring : Marker::Dot;
+    series.markerSize = samples > 1 ? 2.0 : 4.0;
     series.connect = true;
     for (size_t i : members) {
       char label[24] = "";

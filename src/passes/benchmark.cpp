@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "core/process_memory.h"
 #include "core/stats.h"
+#include "core/texture.h"
 
 namespace shadelab {
 
@@ -15,14 +16,22 @@ std::vector<BenchPoint> benchPoints(const BenchAxes& axes) {
   std::vector<BenchPoint> points;
   for (float tessellation : axes.tessellations)
     for (uint32_t samples : axes.msaa)
-      for (ShadingModel model : axes.models) points.push_back({model, tessellation, samples});
+      for (const std::optional<TextureFilter>& filter : axes.filters)
+        for (ShadingModel model : axes.models)
+          points.push_back({model, tessellation, samples, filter});
   return points;
+}
+
+std::string benchFilterName(const std::optional<TextureFilter>& filter) {
+  return filter ? textureFilterName(*filter) : "material";
 }
 
 std::string benchPointName(const BenchPoint& point) {
   char text[64];
-  std::snprintf(text, sizeof text, "%s t%g %ux", std::string(shadingModelName(point.model)).c_str(),
-                point.tessellation, point.msaaSamples);
+  std::snprintf(text, sizeof text, "%s t%g %ux%s%s",
+                std::string(shadingModelName(point.model)).c_str(), point.tessellation,
+                point.msaaSamples, point.filter ? " " : "",
+                point.filter ? textureFilterName(*point.filter) : "");
   return text;
 }
 
@@ -53,6 +62,7 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       BenchResult& result = results[i];
       RenderSettings settings{options.width, options.height, point.model, options.frames};
       settings.msaaSamples = point.msaaSamples;
+      settings.textures.filterOverride = point.filter;
       resetPeakResident();
       RenderResult run = renderer.renderToImage(scenes.at(point.tessellation), settings);
       result.deviceMemoryBytes = std::max(result.deviceMemoryBytes, run.stats.deviceMemoryBytes);
@@ -96,7 +106,7 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
 std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions& options,
                      const std::string& sceneName) {
   std::ostringstream csv;
-  csv << "scene,width,height,mode,tessellation,msaa,triangles,frames,"
+  csv << "scene,width,height,mode,tessellation,msaa,filter,triangles,frames,"
          "device_median_ms,device_p95_ms,wall_median_ms,wall_p95_ms,"
          "device_memory_mb,peak_rss_mb,reference";
   for (const ErrorMetric& metric : options.metrics) csv << ',' << metric.name;
@@ -104,10 +114,10 @@ std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions
   for (const BenchResult& r : results) {
     csv << sceneName << ',' << options.width << ',' << options.height << ','
         << shadingModelName(r.point.model) << ',' << r.point.tessellation << ','
-        << r.point.msaaSamples << ',' << r.triangles << ',' << r.frames << ',' << r.deviceMedianMs
-        << ',' << r.deviceP95Ms << ',' << r.wallMedianMs << ',' << r.wallP95Ms << ','
-        << double(r.deviceMemoryBytes) / (1 << 20) << ',' << double(r.peakResidentBytes) / (1 << 20)
-        << ',' << options.reference.name;
+        << r.point.msaaSamples << ',' << benchFilterName(r.point.filter) << ',' << r.triangles
+        << ',' << r.frames << ',' << r.deviceMedianMs << ',' << r.deviceP95Ms << ','
+        << r.wallMedianMs << ',' << r.wallP95Ms << ',' << double(r.deviceMemoryBytes) / (1 << 20)
+        << ',' << double(r.peakResidentBytes) / (1 << 20) << ',' << options.reference.name;
     for (size_t m = 0; m < options.metrics.size(); ++m) {
       csv << ',';
       if (m < r.errors.size()) csv << r.errors[m];

@@ -6,6 +6,7 @@
 // the time; and each setting's image measured against a reference with the
 // chosen error metrics.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,13 +18,13 @@
 
 namespace shadelab {
 
-// One setting. A new axis (the texture filter, once textures land) is a
-// field here, a list in BenchAxes, a loop in benchPoints() and a column in
-// benchCsv().
+// One setting. A new axis is a field here, a list in BenchAxes, a loop in
+// benchPoints() and a column in benchCsv().
 struct BenchPoint {
   ShadingModel model = ShadingModel::Phong;
   float tessellation = 1.0f;  // Scene::retessellate factor
   uint32_t msaaSamples = 1;
+  std::optional<TextureFilter> filter;  // overrides every sampler; none: the materials' own
 };
 
 // The sweep: every combination, models varying fastest.
@@ -31,9 +32,12 @@ struct BenchAxes {
   std::vector<ShadingModel> models;
   std::vector<float> tessellations{1.0f};
   std::vector<uint32_t> msaa{1};
+  std::vector<std::optional<TextureFilter>> filters{std::nullopt};
 };
 std::vector<BenchPoint> benchPoints(const BenchAxes& axes);
-std::string benchPointName(const BenchPoint& point);  // "phong t2 4x"
+std::string benchPointName(const BenchPoint& point);  // "phong t2 4x", "phong t2 4x nearest"
+// "material" for no override, else the filter's name.
+std::string benchFilterName(const std::optional<TextureFilter>& filter);
 
 struct BenchOptions {
   uint32_t width = 1280;

@@ -48,12 +48,19 @@ std::vector<QualityCandidate> candidatesFromBench(const BenchTable& table,
   size_t triangles = table.column("triangles", source);
   size_t cost = table.column("device_median_ms", source);
   size_t error = table.column(metric.name, source);
+  // Rows that override the texture filter measure the filter, not the model
+  // and tessellation --quality chooses: only the materials' own samplers count.
+  auto filterColumn = std::find(table.columns.begin(), table.columns.end(), "filter");
+  auto ownFilter = [&](const std::vector<std::string>& row) {
+    return filterColumn == table.columns.end() ||
+           row[size_t(filterColumn - table.columns.begin())] == "material";
+  };
   std::vector<QualityCandidate> candidates;
   try {
     for (const std::vector<std::string>& row : table.rows) {
       std::optional<ShadingModel> model = parseShadingModel(row[mode]);
       if (row[scene] != sceneName || !model || *model == ShadingModel::Unlit ||
-          std::stoul(row[samples]) != msaa || row[error].empty())
+          std::stoul(row[samples]) != msaa || row[error].empty() || !ownFilter(row))
         continue;
       candidates.push_back({{*model, std::stof(row[tess]), msaa},
                             std::stoull(row[triangles]),
