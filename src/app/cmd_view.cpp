@@ -22,6 +22,7 @@ struct ViewOptions {
   std::string mode = "phong";
   float tessellation = 1.0f;
   uint32_t msaa = 1;
+  std::string depth = "d32f";
 };
 
 int runView(const ViewOptions& options, const GlobalOptions& global) {
@@ -31,6 +32,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.presentMode = parsePresentMode(options.present);
   viewer.initial.shadingModel = parseShadingModelOption(options.mode, "--mode");
   viewer.initial.msaaSamples = options.msaa;
+  viewer.initial.depth = parseDepthModeOption(options.depth, "--depth");
   viewer.tessellation = options.tessellation;
   if (!options.script.empty())
     viewer.script = parseViewerScript(options.script, Viewer::keyNames());
@@ -84,6 +86,8 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
+  command->add_option("--depth", options->depth, "Depth buffer: d16, d24, d32f, reversed")
+      ->capture_default_str();
   command->add_option("--script", options->script,
                       "Run the steps of FILE (key, frames, drag, scroll, resize, minimize, "
                       "restore, screenshot, memory, quit) instead of waiting for input");

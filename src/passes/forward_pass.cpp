@@ -10,8 +10,8 @@
 
 namespace shadelab {
 
-ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& formats)
-    : context_(context), formats_(formats) {
+ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
+    : context_(context), colorFormat_(colorFormat) {
   VkDevice device = context.device();
   VkDescriptorSetLayoutBinding bindings[] = {
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
@@ -75,20 +75,19 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
   pipelines_.clear();
 }
 
-void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool textured) {
+void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured) {
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool variant : {false, true}) {
-      VariantKey key{ShadingModel(model), lights, samples, variant, false};
+      VariantKey key{ShadingModel(model), lights, target, variant, false};
       if ((!variant || textured) && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
     }
-  VariantKey wireframe{ShadingModel::Unlit, lights, samples, false, true};
+  VariantKey wireframe{ShadingModel::Unlit, lights, target, false, true};
   if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
     pipelines_[wireframe] = createPipeline(wireframe);
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples, textured, wireframe] = key;
-  const AttachmentFormats& formats = formats_;
+  const auto& [model, lights, target, textured, wireframe] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -149,11 +148,13 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   VkPipelineRasterizationStateCreateInfo raster{
       VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = wireframe ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
-  // Edges sit exactly on the filled surface: pull them towards the eye so
-  // the depth test keeps them (a constant plus a slope-scaled offset).
+  // Edges sit exactly on the filled surface: move them towards the eye (a
+  // constant plus a slope-scaled offset; nearer is larger with reversed Z) so
+  // the depth test keeps them.
+  float towardsEye = target.depth == DepthMode::ReversedZ ? 1.0f : -1.0f;
   raster.depthBiasEnable = wireframe ? VK_TRUE : VK_FALSE;
-  raster.depthBiasConstantFactor = -1.0f;
-  raster.depthBiasSlopeFactor = -1.0f;
+  raster.depthBiasConstantFactor = towardsEye;
+  raster.depthBiasSlopeFactor = towardsEye;
   raster.cullMode = VK_CULL_MODE_BACK_BIT;
   // The projection flips y for Vulkan; Vulkan's signed-area rule flips it back,
   // so triangles counter-clockwise in the course's y-up view stay front-facing.
@@ -161,12 +162,15 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VkSampleCountFlagBits(samples);
+  multisample.rasterizationSamples = VkSampleCountFlagBits(target.samples);
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
   depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = wireframe ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_LESS;
+  depth.depthCompareOp = depthCompareOp(target.depth);
+  // Edges pass where they touch the surface they outline.
+  if (wireframe && depth.depthCompareOp == VK_COMPARE_OP_LESS)
+    depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
   VkPipelineColorBlendAttachmentState blendAttachment{};
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
@@ -180,8 +184,8 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &formats.color;
-  rendering.depthAttachmentFormat = formats.depth;
+  rendering.pColorAttachmentFormats = &colorFormat_;
+  rendering.depthAttachmentFormat = depthFormat(target.depth);
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
   info.stageCount = uint32_t(stages.size());
@@ -201,15 +205,15 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   return Pipeline(context_.device(), pipeline);
 }
 
-void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
+void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
                          VkDescriptorSet frameSet, const GpuScene& scene,
                          const VkViewport& viewport) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto plain = pipelines_.find({model, scene.lights, samples, false, false});
-  auto textured = pipelines_.find({model, scene.lights, samples, true, false});
+  auto plain = pipelines_.find({model, scene.lights, target, false, false});
+  auto textured = pipelines_.find({model, scene.lights, target, true, false});
   assert(plain != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, plain->second);
   bool texturedBound = false;
@@ -241,14 +245,15 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t sampl
   }
 }
 
-void ForwardPass::recordWireframe(VkCommandBuffer cmd, uint32_t samples, VkDescriptorSet frameSet,
-                                  const GpuScene& scene, const VkViewport& viewport) const {
+void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
+                                  VkDescriptorSet frameSet, const GpuScene& scene,
+                                  const VkViewport& viewport) const {
   if (!context_.features().fillModeNonSolid) return;
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({ShadingModel::Unlit, scene.lights, samples, false, true});
+  auto pipeline = pipelines_.find({ShadingModel::Unlit, scene.lights, target, false, true});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
