@@ -489,9 +489,10 @@ TEST(SceneJsonFile, LoadsThroughLoadSceneAndReportsBadFiles) {
               HasSubstr("scene file '" + missing.string() + "' does not exist"));
   EXPECT_THAT(errorFrom([&] { loadSceneJson(missing); }),
               HasSubstr("scene file '" + missing.string() + "' does not exist"));
-  EXPECT_THAT(loadError(std::filesystem::path(testing::TempDir())), HasSubstr("not supported yet"));
-  EXPECT_THAT(loadError(writeTempFile("shadelab-model.gltf", "{}")),
-              HasSubstr("not supported yet"));
+  EXPECT_THAT(loadError(std::filesystem::path(testing::TempDir())),
+              HasSubstr("unknown file type (no extension)"));
+  std::filesystem::path emptyModel = writeTempFile("shadelab-model.gltf", "{}");
+  EXPECT_THAT(loadError(emptyModel), HasSubstr(emptyModel.string() + ": invalid glTF"));
   std::filesystem::path directory = std::filesystem::path(testing::TempDir()) / "dir.json";
   std::filesystem::create_directories(directory);
   EXPECT_THAT(loadError(directory), HasSubstr("is a directory"));

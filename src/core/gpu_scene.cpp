@@ -5,6 +5,7 @@
 
 #include <meshoptimizer.h>
 
+#include "core/frustum.h"
 #include "core/transform.h"
 
 namespace shadelab {
@@ -48,7 +49,9 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
   std::vector<DrawItem> meshRanges;
+  std::vector<Bounds> meshBounds;
   for (const Mesh& mesh : scene.meshes) {
+    meshBounds.push_back(computeBounds(mesh));
     meshRanges.push_back({uint32_t(indices.size()), uint32_t(mesh.indices.size()),
                           int32_t(vertices.size()), {}});
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
@@ -65,13 +68,41 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     const Object& object = scene.objects[i];
     DrawItem draw = meshRanges[object.mesh];
     draw.constants.ka = glm::vec4(object.material.ka, 0.0f);
-    draw.constants.kd = glm::vec4(object.material.kd, 0.0f);
+    // kd.w is the opacity the fragment shader writes as alpha.
+    draw.constants.kd = glm::vec4(object.material.kd, 1.0f - object.material.transparency);
     draw.constants.ks = glm::vec4(object.material.ks, object.material.shininess);
     draw.constants.object = glm::ivec4(int(i), 0, 0, 0);
+    draw.worldBounds = transformBounds(meshBounds[object.mesh], object.transform);
+    draw.transparent = object.material.transparency > 0.0f;
+    gpuScene.anyTransparent |= draw.transparent;
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
   }
   return gpuScene;
+}
+
+std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
+                                   const glm::mat4& projection, uint32_t& culled) {
+  Frustum frustum = frustumFromMatrix(projection * view);
+  std::vector<DrawItem> opaque;
+  std::vector<std::pair<float, DrawItem>> transparent;  // (eye-space z, draw)
+  culled = 0;
+  for (const DrawItem& draw : scene.draws) {
+    if (!boxIntersectsFrustum(draw.worldBounds, frustum)) {
+      ++culled;
+      continue;
+    }
+    if (draw.transparent)
+      transparent.emplace_back((view * glm::vec4(centre(draw.worldBounds), 1.0f)).z, draw);
+    else
+      opaque.push_back(draw);
+  }
+  // Eye space looks down -z: the most negative z is the furthest. Ties keep
+  // scene order (stable sort), so the result never depends on the sort's whims.
+  std::stable_sort(transparent.begin(), transparent.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [depth, draw] : transparent) opaque.push_back(draw);
+  return opaque;
 }
 
 LightLayout lightLayoutOf(const Scene& scene) {

@@ -21,6 +21,8 @@ struct DrawItem {
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
   gpu::DrawConstants constants{};  // material and object index, pushed per draw
+  Bounds worldBounds;              // the mesh's box, transformed: what culling tests
+  bool transparent = false;        // blended after the opaque draws, back to front
 };
 
 // How many lights of each kind the shaders loop over: specialization
@@ -43,9 +45,18 @@ struct GpuScene {
   std::vector<DrawItem> draws;
   uint64_t triangles = 0;
   LightLayout lights;
+  bool anyTransparent = false;
 };
 
 GpuScene uploadScene(const Context& context, const Scene& scene);
+
+// The draws of one frame, the one place they are filtered and ordered:
+// draws whose box is outside the view frustum are dropped (counted in
+// `culled`), then the opaque ones in scene order, then the transparent ones
+// back to front by the eye-space depth of their box's centre (the painter's
+// algorithm; blending is not commutative).
+std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
+                                   const glm::mat4& projection, uint32_t& culled);
 
 // Lights move to eye space, so the shaders light with V = -position; the
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.

@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "core/mesh.h"
@@ -43,15 +44,16 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   fragment_ = loadShader(device, "forward.frag");
 }
 
-void ForwardPass::prepare(LightLayout lights, uint32_t samples) {
-  for (int model = 0; model < kShadingModelCount; ++model) {
-    VariantKey key{ShadingModel(model), lights, samples};
-    if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-  }
+void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool blended) {
+  for (int model = 0; model < kShadingModelCount; ++model)
+    for (bool blend : {false, true}) {
+      VariantKey key{ShadingModel(model), lights, samples, blend};
+      if ((blended || !blend) && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+    }
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples] = key;
+  const auto& [model, lights, samples, blended] = key;
   const AttachmentFormats& formats = formats_;
   struct {
     int32_t shadingModel;
@@ -121,9 +123,19 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
+  // Translucent surfaces must not hide what is drawn behind them later.
+  depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;
   depth.depthCompareOp = VK_COMPARE_OP_LESS;
   VkPipelineColorBlendAttachmentState blendAttachment{};
+  // "Over": colour = a src + (1 - a) dst with a = 1 - transparency; the
+  // target's alpha stays as the clear left it.
+  blendAttachment.blendEnable = blended ? VK_TRUE : VK_FALSE;
+  blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+  blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+  blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
@@ -159,21 +171,25 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
                          VkDescriptorSet frameSet, const GpuScene& scene,
-                         const VkViewport& viewport) const {
+                         std::span<const DrawItem> draws, const VkViewport& viewport) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({model, scene.lights, samples});
-  assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
                           nullptr);
   VkDeviceSize offset = 0;
   VkBuffer vertexBuffer = scene.vertices.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
-  for (const DrawItem& draw : scene.draws) {
+  std::optional<bool> boundBlended;
+  for (const DrawItem& draw : draws) {
+    if (boundBlended != draw.transparent) {
+      auto pipeline = pipelines_.find({model, scene.lights, samples, draw.transparent});
+      assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
+      boundBlended = draw.transparent;
+    }
     vkCmdPushConstants(cmd, layout_,
                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                            VK_SHADER_STAGE_FRAGMENT_BIT,

@@ -1,9 +1,10 @@
 #pragma once
-// Forward shading pass: draws every object of a GpuScene with the Phong
-// illumination equation under one of the shading models.
+// Forward shading pass: draws the visible objects of a GpuScene with the
+// Phong illumination equation under one of the shading models.
 // Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index buffers.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
+#include <span>
 #include <tuple>
 
 #include "core/context.h"
@@ -26,13 +27,18 @@ class ForwardPass {
   // Builds the pipelines of every shading model for a scene's light layout
   // (specialization constants) and a sample count, before any frame records
   // with them.
-  void prepare(LightLayout lights, uint32_t samples);
-  // Records inside an active dynamic-rendering scope; sets its own viewport.
+  // `blended` adds the variants transparent draws use.
+  void prepare(LightLayout lights, uint32_t samples, bool blended);
+  // Records `draws` (visibleDraws: opaque first, then transparent ones, which
+  // blend over what is drawn and do not write depth) inside an active
+  // dynamic-rendering scope; sets its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples, VkDescriptorSet frameSet,
-              const GpuScene& scene, const VkViewport& viewport) const;
+              const GpuScene& scene, std::span<const DrawItem> draws,
+              const VkViewport& viewport) const;
 
  private:
-  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t>;  // model, lights, samples
+  // model, lights, samples, blended
+  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t, bool>;
   Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;

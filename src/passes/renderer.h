@@ -32,8 +32,9 @@ struct RenderSettings {
 struct RenderStats {
   std::vector<double> deviceMs;  // per frame, from GPU timestamps around the frame's commands
   std::vector<double> wallMs;    // per frame, interval between successive frame completions
-  uint64_t triangles = 0;        // submitted per frame
-  uint32_t drawCalls = 0;
+  uint64_t triangles = 0;        // submitted per frame (after culling)
+  uint32_t drawCalls = 0;        // submitted per frame (after culling)
+  uint32_t culledDraws = 0;      // objects outside the view frustum, not drawn
 };
 
 struct RenderResult {
@@ -84,7 +85,7 @@ class Renderer {
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
   void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                   const RenderSettings& settings, const Buffer* readback);
+                   const RenderSettings& settings, const Buffer* readback, RenderStats& stats);
 
   const Context& context_;
   ForwardPass forward_;
