@@ -82,13 +82,13 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
 }
 
 std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
-                                   const glm::mat4& projection, uint32_t& culled) {
+                                   const glm::mat4& projection, bool cull, uint32_t& culled) {
   Frustum frustum = frustumFromMatrix(projection * view);
   std::vector<DrawItem> opaque;
   std::vector<std::pair<float, DrawItem>> transparent;  // (eye-space z, draw)
   culled = 0;
   for (const DrawItem& draw : scene.draws) {
-    if (!boxIntersectsFrustum(draw.worldBounds, frustum)) {
+    if (cull && !boxIntersectsFrustum(draw.worldBounds, frustum)) {
       ++culled;
       continue;
     }

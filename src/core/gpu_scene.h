@@ -56,7 +56,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene);
 // back to front by the eye-space depth of their box's centre (the painter's
 // algorithm; blending is not commutative).
 std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
-                                   const glm::mat4& projection, uint32_t& culled);
+                                   const glm::mat4& projection, bool cull, uint32_t& culled);
 
 // Lights move to eye space, so the shaders light with V = -position; the
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.

@@ -198,7 +198,8 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
-  std::vector<DrawItem> draws = visibleDraws(scene, view, projection, stats.culledDraws);
+  std::vector<DrawItem> draws = visibleDraws(scene, view, projection, settings.frustumCulling,
+                                              stats.culledDraws);
   stats.drawCalls = uint32_t(draws.size());
   stats.triangles = 0;
   for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;

@@ -27,6 +27,7 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  bool frustumCulling = true;  // off only to show that culling changes no pixel
 };
 
 struct RenderStats {
