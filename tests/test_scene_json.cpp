@@ -451,7 +451,7 @@ const ErrorCase kErrorCases[] = {
   {"ZeroIor", noObjects(R"("materials": {"m": {"ior": 0}})"), {"materials.m.ior"}},
   {"NegativeAmbient", noObjects(R"("ambient": [-1, 0, 0])"), {"ambient[0]: -1 is negative"}},
   {"GroupWithoutChildren", oneObject(R"("name": "empty")"),
-   {"scene.json: objects[0]: a group (an object without \"shape\") with no children"}},
+   {"scene.json: objects[0]: a group (an object without \"shape\" or \"gltf\") with no children"}},
   {"GroupWithEmptyChildren", oneObject(R"("children": [])"),
    {"objects[0].children: a group", "a non-empty \"children\" array"}},
 };
