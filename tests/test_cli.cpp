@@ -248,7 +248,7 @@ TEST_F(Cli, BenchBadSampleCountIsAUsageError) {
 // and the defect, and no output image (not even a temporary).
 TEST_F(Cli, BrokenGltfFilesAreInputErrors) {
   const std::pair<const char*, const char*> cases[] = {
-      {"truncated.glb", "invalid GLB"},
+      {"truncated.glb", "invalid GLB: truncated"},
       {"syntax_error.gltf", "parse error at line 73"},
       {"accessor_past_buffer.gltf", "past the end of its bufferView"},
       {"missing_buffer.gltf", "does_not_exist.bin"},

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "core/errors.h"
 #include "core/frustum.h"
@@ -173,6 +174,20 @@ TEST(GltfLoader, PunctualLightsAndAnOrthographicCamera) {
   EXPECT_EQ(glm::vec2(camera.near, camera.far), glm::vec2(0.5, 20));
 }
 
+TEST(GltfLoader, PerspectiveCameraWithoutFarPlane) {
+  std::ifstream in(data("lights_camera.gltf"));
+  nlohmann::json document = nlohmann::json::parse(in);
+  document["cameras"][0] = {{"type", "perspective"},
+                            {"perspective", {{"yfov", 0.5}, {"znear", 0.25}}}};
+  std::string text = document.dump();
+  std::vector<uint8_t> bytes(text.begin(), text.end());
+  Camera camera = parseGltfScene(bytes, "perspective.gltf").camera;
+  EXPECT_EQ(camera.projection, Projection::Perspective);
+  EXPECT_NEAR(camera.fovyDegrees, glm::degrees(0.5f), 1e-4f);
+  EXPECT_EQ(camera.near, 0.25f);
+  EXPECT_EQ(camera.far, 2500.0f);  // none given: 10^4 near
+}
+
 TEST(GltfLoader, BinaryGlbLoads) {
   Scene scene = loadScene(data("triangle.glb").string());
   ASSERT_EQ(scene.objects.size(), 1u);
@@ -214,15 +229,16 @@ TEST_P(GltfBadInput, IsAnInputErrorNamingTheFileAndTheProblem) {
 
 INSTANTIATE_TEST_SUITE_P(
     Files, GltfBadInput,
-    ::testing::Values(BadFile{"truncated.glb", "invalid GLB"},
-                      BadFile{"syntax_error.gltf", "parse error at line 73"},
-                      BadFile{"accessor_past_buffer.gltf", "POSITION (accessors[0]): 300 elements"},
-                      BadFile{"missing_buffer.gltf", "does_not_exist.bin"},
-                      BadFile{"missing_image.gltf", "images[0] 'no_such_image.png'"},
-                      BadFile{"required_extension.gltf",
-                              "\"KHR_draco_mesh_compression\" is not supported"},
-                      BadFile{"zero_triangles.gltf", "meshes[0] primitives[0]: no triangles"},
-                      BadFile{"index_out_of_range.gltf", "index 7 at position 2 is out of range"}),
+    ::testing::Values(
+        BadFile{"truncated.glb",
+                "invalid GLB: truncated, the header gives 788 bytes but the file has 394"},
+        BadFile{"syntax_error.gltf", "parse error at line 73"},
+        BadFile{"accessor_past_buffer.gltf", "POSITION (accessors[0]): 300 elements"},
+        BadFile{"missing_buffer.gltf", "does_not_exist.bin"},
+        BadFile{"missing_image.gltf", "images[0] 'no_such_image.png'"},
+        BadFile{"required_extension.gltf", "\"KHR_draco_mesh_compression\" is not supported"},
+        BadFile{"zero_triangles.gltf", "meshes[0] primitives[0]: no triangles"},
+        BadFile{"index_out_of_range.gltf", "index 7 at position 2 is out of range"}),
     [](const auto& info) {
       std::string name = info.param.file;
       return name.substr(0, name.find('.'));

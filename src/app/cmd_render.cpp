@@ -77,10 +77,10 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
-  std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws)\n",
+  std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled)\n",
               options.output.c_str(), size.width, size.height, scene.name.c_str(),
               options.mode.c_str(), static_cast<unsigned long long>(result.stats.triangles),
-              result.stats.drawCalls);
+              result.stats.drawCalls, result.stats.culledDraws);
   if (options.frames > 1) printTimings(result.stats);
   return finishWithValidation(*context, 0);
 }

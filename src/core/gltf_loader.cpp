@@ -59,6 +59,19 @@ std::string trimmed(std::string text) {
   return text;
 }
 
+// tinygltf says only "Invalid glTF binary" for a short file; say what is short.
+void checkGlbLength(std::span<const uint8_t> bytes, const std::string& source) {
+  if (bytes.size() < 12)
+    throw InputError(source + ": invalid GLB: truncated, " + std::to_string(bytes.size()) +
+                     " bytes, less than the 12-byte header");
+  uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 8, 4);  // little-endian, as on every host we build for
+  if (length > bytes.size())
+    throw InputError(source + ": invalid GLB: truncated, the header gives " +
+                     std::to_string(length) + " bytes but the file has " +
+                     std::to_string(bytes.size()));
+}
+
 tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& source,
                            const std::string& baseDir, bool allowFiles) {
   tinygltf::TinyGLTF loader;
@@ -69,6 +82,7 @@ tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& so
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (bytes.size() > std::numeric_limits<unsigned int>::max())
     throw InputError(source + ": file too large");
+  if (binary) checkGlbLength(bytes, source);
   bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
                                                  unsigned(bytes.size()), baseDir)
                    : loader.LoadASCIIFromString(&model, &error, &warning,
