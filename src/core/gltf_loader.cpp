@@ -338,14 +338,29 @@ Bounds sceneBounds(const Scene& scene) {
 }
 
 // A three-quarter view from the front (+z), a little above and to the
-// right, at the distance where the bounding sphere fills a 45 degree view.
+// right, at the nearest distance where all 8 corners of the box fall inside
+// the 45 degree view, horizontally too for any aspect >= 1. A corner at
+// (x, y) across and z towards the eye needs D >= z + max(|x|, |y|) / tan(fovy/2).
 Camera frameBounds(const Bounds& worldBounds) {
   Camera camera;
   glm::vec3 c = centre(worldBounds);
   float radius = std::max(boundingRadius(worldBounds), 1e-4f);
-  float distance = radius / std::sin(glm::radians(camera.fovyDegrees) * 0.5f);
+  glm::vec3 back = glm::normalize(glm::vec3(0.5f, 0.35f, 1.0f));  // centre -> eye
+  glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), back));
+  glm::vec3 up = glm::cross(back, right);
+  float tanHalf = std::tan(glm::radians(camera.fovyDegrees) * 0.5f);
+  float distance = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    glm::vec3 p = glm::vec3(corner & 1 ? worldBounds.max.x : worldBounds.min.x,
+                            corner & 2 ? worldBounds.max.y : worldBounds.min.y,
+                            corner & 4 ? worldBounds.max.z : worldBounds.min.z) -
+                  c;
+    float across = std::max(std::abs(glm::dot(p, right)), std::abs(glm::dot(p, up)));
+    distance = std::max(distance, glm::dot(p, back) + across / tanHalf);
+  }
+  distance = std::max(distance * 1.05f, radius * 1e-2f);  // a 5% margin
   camera.at = c;
-  camera.eye = c + distance * glm::normalize(glm::vec3(0.5f, 0.35f, 1.0f));
+  camera.eye = c + distance * back;
   camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
   camera.near = std::max(distance - radius, distance * 1e-3f) * 0.5f;
   camera.far = distance + radius * 2.0f;
