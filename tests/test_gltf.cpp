@@ -129,25 +129,24 @@ TEST(GltfLoader, TexturesSamplersAndTheMaterialFormula) {
   }
 }
 
-TEST(GltfLoader, MetalAndRoughnessMapOntoSpecular) {
-  std::filesystem::path path = std::filesystem::path(testing::TempDir()) / "metal.gltf";
-  std::string triangle;
-  {
-    std::ifstream in(data("hierarchy.gltf"));
-    triangle.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  // Give the hierarchy's triangle primitive material 0 (red metal).
-  std::string withMaterial = triangle;
-  withMaterial.replace(withMaterial.find("\"attributes\""), 0, "\"material\": 0, ");
-  withMaterial.replace(withMaterial.rfind('}'), 1,
-                       ", \"materials\": [{\"pbrMetallicRoughness\": {\"baseColorFactor\": "
-                       "[1, 0, 0, 1], \"metallicFactor\": 1, \"roughnessFactor\": 1}}]}");
-  std::ofstream(path) << withMaterial;
-  Material material = loadScene(path.string()).objects[0].material;
+TEST(GltfLoader, MetalRoughnessAndEmissiveStrength) {
+  // The hierarchy's triangles with a rough red metal that glows.
+  std::ifstream in(data("hierarchy.gltf"));
+  nlohmann::json document = nlohmann::json::parse(in);
+  document["meshes"][0]["primitives"][0]["material"] = 0;
+  document["materials"] = nlohmann::json::parse(R"([{
+      "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 0.5], "metallicFactor": 1,
+                               "roughnessFactor": 1},
+      "emissiveFactor": [1, 0.5, 0],
+      "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}}])");
+  std::string text = document.dump();
+  Material material =
+      parseGltfScene(std::vector<uint8_t>(text.begin(), text.end()), "metal").objects[0].material;
   EXPECT_EQ(material.kd, glm::vec3(0.0f));              // metals: no diffuse
   EXPECT_EQ(material.ks, glm::vec3(1.0f, 0.0f, 0.0f));  // ks = baseColor
   EXPECT_EQ(material.shininess, 1.0f);                  // 2 / 1 - 2 = 0, clamped to 1
-  EXPECT_EQ(material.transparency, 0.0f);               // OPAQUE
+  EXPECT_EQ(material.transparency, 0.0f);               // OPAQUE ignores alpha
+  EXPECT_EQ(material.emissive, glm::vec3(4.0f, 2.0f, 0.0f));
 }
 
 TEST(GltfLoader, PunctualLightsAndAnOrthographicCamera) {

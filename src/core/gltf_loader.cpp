@@ -21,7 +21,8 @@ namespace {
 using gltf::fail;
 
 // Extensions whose absence changes nothing we draw, or that we implement.
-const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual"};
+const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual",
+                                                    "KHR_materials_emissive_strength"};
 constexpr int kMaxDepth = 1024;  // node nesting; deeper is an attack on the stack, not a model
 
 std::vector<uint8_t> readFile(const std::filesystem::path& path) {
@@ -94,7 +95,8 @@ tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& so
   for (const std::string& extension : model.extensionsRequired)
     if (!kSupportedExtensions.count(extension))
       throw InputError(source + ": extensionsRequired: \"" + extension +
-                       "\" is not supported (shadelab supports KHR_lights_punctual)");
+                       "\" is not supported (shadelab supports KHR_lights_punctual and "
+                       "KHR_materials_emissive_strength)");
   // tinygltf only warns when an external buffer is missing; nothing can be
   // drawn from it, so it is an error here.
   for (size_t i = 0; i < model.buffers.size(); ++i)
@@ -133,10 +135,9 @@ class NodeWalker {
   GltfImport walk(const glm::mat4& parent) {
     GltfImport result;
     result_ = &result;
-    result.firstObject = uint32_t(scene_.objects.size());
+    size_t before = scene_.objects.size();
     for (int root : rootNodes()) visit(root, parent, 0);
-    if (scene_.objects.size() == result.firstObject)
-      fail(source_, "", "the scene has no triangles to draw");
+    if (scene_.objects.size() == before) fail(source_, "", "the scene has no triangles to draw");
     return result;
   }
 

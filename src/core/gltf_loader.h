@@ -3,7 +3,6 @@
 // model, through tinygltf. What maps to what (materials, lights, cameras,
 // samplers) is listed in README.md ("glTF scenes"); every problem in a file
 // throws InputError "<file>: <where>: <what>".
-#include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <optional>
@@ -20,7 +19,6 @@ namespace shadelab {
 struct GltfImport {
   std::vector<Light> lights;     // KHR_lights_punctual, scene order
   std::optional<Camera> camera;  // the first camera node of the scene
-  uint32_t firstObject = 0;      // the objects it added: [firstObject, scene.objects.size())
 };
 
 // Appends the file's meshes, materials and textures to `scene`, each object

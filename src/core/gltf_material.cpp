@@ -98,6 +98,10 @@ const Material& MaterialTable::material(int index) {
   float a = std::max(roughness * roughness, 1e-3f);
   material.shininess = std::clamp(2.0f / (a * a) - 2.0f, 1.0f, 2048.0f);
   material.emissive = glm::max(vec3Of(source.emissiveFactor, glm::vec3(0.0f)), 0.0f);
+  auto strength = source.extensions.find("KHR_materials_emissive_strength");
+  if (strength != source.extensions.end() && strength->second.Has("emissiveStrength"))
+    material.emissive *=
+        std::max(float(strength->second.Get("emissiveStrength").GetNumberAsDouble()), 0.0f);
   // Only BLEND is translucent; MASK (alpha cut-outs) draws as opaque.
   if (source.alphaMode == "BLEND") material.transparency = 1.0f - alpha;
   if (index >= 0) {
