@@ -175,7 +175,15 @@ class NodeWalker {
       fail(source_, where, "nested more than " + std::to_string(kMaxDepth) + " levels deep");
     const tinygltf::Node& node = model_.nodes[size_t(index)];
     glm::mat4 world = parent * localMatrix(node);
-    if (node.mesh >= 0) addMesh(node.mesh, world, where);
+    for (int column = 0; column < 4; ++column)
+      for (int row = 0; row < 4; ++row)
+        if (!std::isfinite(world[column][row]))
+          fail(source_, where,
+               "its transform (matrix or translation/rotation/scale) is not finite");
+    // A node scaled to nothing (a common way to hide one) draws nothing, and
+    // its normals would have no inverse transpose.
+    bool collapsed = glm::determinant(glm::mat3(world)) == 0.0f;
+    if (node.mesh >= 0 && !collapsed) addMesh(node.mesh, world, where);
     if (node.camera >= 0 && !result_->camera) result_->camera = camera(node.camera, world, where);
     auto light = node.extensions.find("KHR_lights_punctual");
     if (light != node.extensions.end() && light->second.Has("light"))
