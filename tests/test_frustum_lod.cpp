@@ -155,6 +155,36 @@ TEST(LevelOfDetail, AutoTessellationMeetsThePixelBound) {
   EXPECT_GE(far, 3u);
 }
 
+// The torus's ring (outer circle R + r, n segments) and tube (r, n / 2) and
+// the teapot's body (radius 2, 4 patches of k quads around) meet the bound.
+TEST(LevelOfDetail, TorusAndTeapotLevelsMeetThePixelBound) {
+  Scene scene;
+  scene.camera.eye = glm::vec3(0, 0, 12);
+  ShapeDesc torus;
+  torus.kind = ShapeKind::Torus;
+  torus.majorRadius = 1.0f;
+  torus.minorRadius = 0.3f;
+  ShapeDesc teapot;
+  teapot.kind = ShapeKind::Teapot;
+  scene.objects.push_back({"torus", scene.addShape(torus), glm::mat4(1.0f), Material{}});
+  scene.objects.push_back({"teapot", scene.addShape(teapot), scaling(glm::vec3(0.5f)), Material{}});
+  ViewSize view{scene.camera, 1280, 720};
+  tessellateForView(scene, view, 0.5f);
+  auto chordPixels = [&](float radius, uint32_t segments, float depth, float scale) {
+    return scale * radius * (1.0f - std::cos(3.14159265f / float(segments))) *
+           pixelsPerUnit(view, depth);
+  };
+  uint32_t n = scene.shapes[0].tessellation;
+  float torusDepth = 12.0f - boundingRadius(computeBounds(scene.meshes[0]));
+  EXPECT_LE(chordPixels(1.3f, n, torusDepth, 1.0f), 0.5f);
+  EXPECT_LE(chordPixels(0.3f, n / 2, torusDepth, 1.0f), 0.5f);
+  uint32_t k = scene.shapes[1].tessellation;
+  Bounds teapotBox = transformBounds(computeBounds(scene.meshes[1]), scaling(glm::vec3(0.5f)));
+  float teapotDepth = 12.0f - centre(teapotBox).z - boundingRadius(teapotBox);
+  EXPECT_LE(chordPixels(2.0f, 4 * k, teapotDepth, 0.5f), 0.5f);
+  EXPECT_GT(chordPixels(2.0f, 4 * (k - 1), teapotDepth, 0.5f), 0.5f);  // and no finer
+}
+
 // --simplify: a finely tessellated sphere (a custom mesh, as glTF ones are)
 // far away loses most triangles; near it keeps more.
 TEST(LevelOfDetail, SimplificationKeepsMoreTrianglesWhenNearer) {
