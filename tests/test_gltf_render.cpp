@@ -38,6 +38,43 @@ TEST_F(GltfRender, EverySharedModelRendersInView) {
   }
 }
 
+// Goldens of loaded scenes: the material mapping, the hierarchy and the
+// framing all show in them. Must-fail twins change one of those a little.
+Scene sharedModel(const std::string& file) {
+  return loadScene((sharedAssetsDir() / "models" / file).string());
+}
+
+TEST_F(GltfRender, SharedModelsMatchGoldens) {
+  if (!std::filesystem::exists(sharedAssetsDir() / "models"))
+    GTEST_SKIP() << "no models in " << sharedAssetsDir();
+  RenderSettings settings{320, 180, ShadingModel::Phong, 1};
+  EXPECT_TRUE(matchesGolden("gltf-suzanne", render(sharedModel("suzanne.gltf"), settings)));
+  EXPECT_TRUE(matchesGolden("gltf-color-teapot-spheres",
+                            render(sharedModel("color_teapot_spheres.gltf"), settings)));
+}
+
+TEST_F(GltfRender, ComparisonRejectsADarkerMaterialOrAMovedNode) {
+  if (!std::filesystem::exists(sharedAssetsDir() / "models"))
+    GTEST_SKIP() << "no models in " << sharedAssetsDir();
+  RenderSettings settings{320, 180, ShadingModel::Phong, 1};
+  Scene metallic = sharedModel("suzanne.gltf");
+  metallic.objects[0].material.kd *= 0.8f;  // as metallic 0.2 would give
+  EXPECT_FALSE(matchesImage(loadGolden("gltf-suzanne"), render(metallic, settings)));
+  Scene moved = sharedModel("color_teapot_spheres.gltf");
+  moved.objects[0].transform = translation({0.0f, 1.0f, 0.0f}) * moved.objects[0].transform;
+  EXPECT_FALSE(matchesImage(loadGolden("gltf-color-teapot-spheres"), render(moved, settings)));
+}
+
+TEST_F(GltfRender, GltfPlacedInASceneFileMatchesGolden) {
+  std::string path = std::string(SHADELAB_TEST_DATA_DIR) + "/gltf_in_scene.json";
+  RenderSettings settings{320, 180, ShadingModel::Phong, 1};
+  EXPECT_TRUE(matchesGolden("gltf-in-scene", render(loadScene(path), settings)));
+  Scene shifted = loadScene(path);
+  for (size_t i = 1; i < shifted.objects.size(); ++i)  // the glTF's, not the floor
+    shifted.objects[i].transform = translation({0.1f, 0.0f, 0.0f}) * shifted.objects[i].transform;
+  EXPECT_FALSE(matchesImage(loadGolden("gltf-in-scene"), render(shifted, settings)));
+}
+
 // The default scene with a ring of 24 spheres around the camera: those
 // behind it and off to the sides are culled. With culling on the image is
 // the same to the bit and fewer draws are made.
