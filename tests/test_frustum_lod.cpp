@@ -27,8 +27,15 @@ Bounds cube(glm::vec3 centre, float half) {
   return {centre - glm::vec3(half), centre + glm::vec3(half)};
 }
 
-TEST(Frustum, PlanesBoundWhatTheProjectionMapsIntoClipSpace) {
+class FrustumPlanes : public ::testing::TestWithParam<Projection> {};
+
+TEST_P(FrustumPlanes, BoundWhatTheProjectionMapsIntoClipSpace) {
   Camera camera;
+  camera.projection = GetParam();
+  camera.left = -8.0f, camera.right = 6.0f, camera.bottom = -4.0f, camera.top = 5.0f;
+  if (camera.projection == Projection::Frustum) {
+    camera.left = -0.08f, camera.right = 0.05f, camera.bottom = -0.04f, camera.top = 0.06f;
+  }
   glm::mat4 viewProjection = camera.projectionMatrix(1.5f) * camera.viewMatrix();
   Frustum frustum = frustumFromMatrix(viewProjection);
   std::mt19937 random(7);
@@ -53,7 +60,11 @@ TEST(Frustum, PlanesBoundWhatTheProjectionMapsIntoClipSpace) {
   EXPECT_GT(inside, 20);  // the sample reaches inside as well as out
 }
 
-TEST(Frustum, BoxesInsideOutsideAndStraddling) {
+INSTANTIATE_TEST_SUITE_P(Projections, FrustumPlanes,
+                         ::testing::Values(Projection::Perspective, Projection::Frustum,
+                                           Projection::Orthographic));
+
+TEST(FrustumCulling, BoxesInsideOutsideAndStraddling) {
   Frustum frustum = cameraFrustum();
   EXPECT_TRUE(boxIntersectsFrustum(cube({0, 0, 0}, 0.5f), frustum));      // in the middle
   EXPECT_FALSE(boxIntersectsFrustum(cube({0, 2, 9}, 0.5f), frustum));     // behind the eye
@@ -64,7 +75,7 @@ TEST(Frustum, BoxesInsideOutsideAndStraddling) {
 }
 
 // The positive-vertex test is exactly "all 8 corners outside one plane".
-TEST(Frustum, BoxTestEqualsBruteForceOverCorners) {
+TEST(FrustumCulling, BoxTestEqualsBruteForceOverCorners) {
   Frustum frustum = cameraFrustum();
   std::mt19937 random(11);
   std::uniform_real_distribution<float> coordinate(-40.0f, 40.0f), size(0.01f, 15.0f);
@@ -86,7 +97,7 @@ TEST(Frustum, BoxTestEqualsBruteForceOverCorners) {
 }
 
 // Arvo's box contains every transformed corner and touches each of its faces.
-TEST(Frustum, TransformedBoundsAreTightAroundTheCorners) {
+TEST(FrustumCulling, TransformedBoundsAreTightAroundTheCorners) {
   Bounds box{{-1, -2, -0.5f}, {3, 1, 0.5f}};
   glm::mat4 transform = translation({5, -1, 2}) * rotationAxis({1, 2, 3}, 0.7f) *
                         scaling({2, 0.5f, 3}) * shearing({.xy = 0.3f});
