@@ -39,9 +39,9 @@ TEST_P(FrustumPlanes, BoundWhatTheProjectionMapsIntoClipSpace) {
   glm::mat4 viewProjection = camera.projectionMatrix(1.5f) * camera.viewMatrix();
   Frustum frustum = frustumFromMatrix(viewProjection);
   std::mt19937 random(7);
-  std::uniform_real_distribution<float> coordinate(-60.0f, 60.0f);
+  std::uniform_real_distribution<float> coordinate(-30.0f, 30.0f);
   int inside = 0;
-  for (int i = 0; i < 2000; ++i) {
+  for (int i = 0; i < 4000; ++i) {
     glm::vec3 p(coordinate(random), coordinate(random), coordinate(random));
     glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
     bool inClip = clip.w > 0 && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
