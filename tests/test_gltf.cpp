@@ -121,11 +121,15 @@ TEST(GltfLoader, TexturesSamplersAndTheMaterialFormula) {
   EXPECT_NEAR(material.shininess, 30.0f, 1e-3f);
   EXPECT_NEAR(material.transparency, 0.75f, 1e-6f);
   EXPECT_NEAR(glm::distance(material.emissive, glm::vec3(0.1f, 0.2f, 0.3f)), 0.0f, 1e-6f);
+  // glTF's v runs down the image, ours up: the corner at (0, 1, 0) with
+  // glTF uv (0, 0), the image's first texel, has v = 1 here.
+  for (const Vertex& vertex : scene.meshes[0].vertices)
+    EXPECT_EQ(vertex.uv, glm::vec2(vertex.position.x, vertex.position.y));
   // The normal map needs tangents the file lacks: generated along +u (x),
-  // perpendicular to the normal, right-handed.
+  // perpendicular to the normal, unmirrored (the bitangent along +v is +y).
   for (const Vertex& vertex : scene.meshes[0].vertices) {
     EXPECT_NEAR(glm::distance(glm::vec3(vertex.tangent), glm::vec3(1, 0, 0)), 0.0f, 1e-5f);
-    EXPECT_EQ(std::abs(vertex.tangent.w), 1.0f);
+    EXPECT_EQ(vertex.tangent.w, 1.0f);
   }
 }
 

@@ -75,6 +75,20 @@ TEST_F(GltfRender, GltfPlacedInASceneFileMatchesGolden) {
   EXPECT_FALSE(matchesImage(loadGolden("gltf-in-scene"), render(shifted, settings)));
 }
 
+// The 2x2 texture (red, green / blue, white) on the quad, its first row at
+// the top as glTF's uv (0, 0) is the image's first texel; the twin samples
+// it upside down.
+TEST_F(GltfRender, TextureAppearsTheWayUpGltfMeans) {
+  std::string path = std::string(SHADELAB_TEST_DATA_DIR) + "/textured.gltf";
+  Scene scene = loadScene(path);
+  scene.objects[0].material.transparency = 0.0f;  // the texture's own colours
+  RenderSettings settings{160, 120, ShadingModel::Unlit, 1};
+  ImageU8 image = render(scene, settings);
+  EXPECT_TRUE(matchesGolden("gltf-textured", image));
+  for (Vertex& vertex : scene.meshes[0].vertices) vertex.uv.y = 1.0f - vertex.uv.y;
+  EXPECT_FALSE(matchesImage(loadGolden("gltf-textured"), render(scene, settings)));
+}
+
 // The default scene with a ring of 24 spheres around the camera: those
 // behind it and off to the sides are culled. With culling on the image is
 // the same to the bit and fewer draws are made.

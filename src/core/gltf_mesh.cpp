@@ -276,8 +276,11 @@ Mesh primitiveMesh(const tinygltf::Model& model, const std::string& source, int 
   };
   bool hasNormals = fill("NORMAL", TINYGLTF_TYPE_VEC3, false,
                          [](Vertex& v, const float* f) { v.normal = glm::vec3(f[0], f[1], f[2]); });
+  // glTF's v runs down the image from its first row; ours runs up (the
+  // shaders sample t = 1 - v), so v flips. Tangents need no change: glTF's
+  // bitangent w cross(N, T) already points up the image, as ours does.
   fill("TEXCOORD_0", TINYGLTF_TYPE_VEC2, true,
-       [](Vertex& v, const float* f) { v.uv = glm::vec2(f[0], f[1]); });
+       [](Vertex& v, const float* f) { v.uv = glm::vec2(f[0], 1.0f - f[1]); });
   bool hasTangents = fill("TANGENT", TINYGLTF_TYPE_VEC4, false, [](Vertex& v, const float* f) {
     v.tangent = glm::vec4(f[0], f[1], f[2], f[3] < 0.0f ? -1.0f : 1.0f);
   });

@@ -21,8 +21,10 @@ struct DrawItem {
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
   gpu::DrawConstants constants{};  // material and object index, pushed per draw
-  Bounds worldBounds;              // the mesh's box, transformed: what culling tests
-  bool transparent = false;        // blended after the opaque draws, back to front
+  bool textured = false;  // the material has a texture: drawn by the textured pipelines
+  VkDescriptorSet materialSet = VK_NULL_HANDLE;  // set 1 when textured (passes/scene_textures)
+  Bounds worldBounds;        // the mesh's box, transformed: what culling tests
+  bool transparent = false;  // blended after the opaque draws, back to front
 };
 
 // How many lights of each kind the shaders loop over: specialization
@@ -48,6 +50,8 @@ struct GpuScene {
   bool anyTransparent = false;
 };
 
+// Objects whose material asks for a UV projection draw a copy of their mesh
+// with projected UVs; meshes without tangents get computed ones (mesh.h).
 GpuScene uploadScene(const Context& context, const Scene& scene);
 
 // The draws of one frame, the one place they are filtered and ordered:

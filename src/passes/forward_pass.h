@@ -1,7 +1,11 @@
 #pragma once
 // Forward shading pass: draws the visible objects of a GpuScene with the
 // Phong illumination equation under one of the shading models.
-// Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index buffers.
+// Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index
+// buffers; textured draws also set 1 (their material's textures).
+// Textured draws use their own variants (forward_textured.*): they read the
+// uv and tangent attributes, which the others do not declare. Transparent
+// draws use blended variants that do not write depth.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
 #include <span>
@@ -24,30 +28,35 @@ class ForwardPass {
   ForwardPass(const Context& context, const AttachmentFormats& formats);
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
+  VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_.get(); }
   // Builds the pipelines of every shading model for a scene's light layout
   // (specialization constants) and a sample count, before any frame records
-  // with them.
-  // `blended` adds the variants transparent draws use.
-  void prepare(LightLayout lights, uint32_t samples, bool blended);
+  // with them; `textured` adds the textured variants, `blended` the ones
+  // transparent draws use.
+  void prepare(LightLayout lights, uint32_t samples, bool textured, bool blended);
   // Records `draws` (visibleDraws: opaque first, then transparent ones, which
-  // blend over what is drawn and do not write depth) inside an active
-  // dynamic-rendering scope; sets its own viewport.
+  // blend over what is drawn) inside an active dynamic-rendering scope; sets
+  // its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples, VkDescriptorSet frameSet,
               const GpuScene& scene, std::span<const DrawItem> draws,
               const VkViewport& viewport) const;
 
  private:
-  // model, lights, samples, blended
-  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t, bool>;
+  // model, lights, samples, textured, blended
+  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t, bool, bool>;
   Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;
   AttachmentFormats formats_;
   DescriptorSetLayout setLayout_;
+  DescriptorSetLayout materialSetLayout_;
   PipelineLayout layout_;
   ShaderModule vertex_;
   ShaderModule flatGeometry_;
   ShaderModule fragment_;
+  ShaderModule texturedVertex_;
+  ShaderModule texturedFlatGeometry_;
+  ShaderModule texturedFragment_;
   std::map<VariantKey, Pipeline> pipelines_;
 };
 
