@@ -115,6 +115,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     draw.transparent = material.transparency > 0.0f;
     gpuScene.anyTransparent |= draw.transparent;
     gpuScene.draws.push_back(draw);
+    gpuScene.triangles += draw.indexCount / 3;
   }
   return gpuScene;
 }

@@ -45,6 +45,7 @@ struct GpuScene {
   Buffer vertices;
   Buffer indices;
   std::vector<DrawItem> draws;
+  uint64_t triangles = 0;
   LightLayout lights;
   bool anyTransparent = false;
 };
