@@ -117,6 +117,15 @@ TEST_F(GltfRender, CullingChangesNoPixelButReducesDraws) {
   EXPECT_LE(culled.stats.culledDraws, 20u);
   EXPECT_EQ(culled.stats.drawCalls + culled.stats.culledDraws, scene.objects.size());
   EXPECT_LT(culled.stats.triangles, all.stats.triangles);
+  // Reversed-Z swaps the near and far planes' depths; the planes still bound
+  // the same volume, so the same draws are culled.
+  culling.depth = everything.depth = DepthMode::ReversedZ;
+  RenderResult reversedCulled = renderer().renderToImage(scene, culling);
+  RenderResult reversedAll = renderer().renderToImage(scene, everything);
+  EXPECT_EQ(compareImages(encodeSrgb8(reversedCulled.image), encodeSrgb8(reversedAll.image))
+                .maxDifference,
+            0);
+  EXPECT_EQ(reversedCulled.stats.culledDraws, culled.stats.culledDraws);
 }
 
 // Three overlapping translucent quads (red nearest, then green, then blue)

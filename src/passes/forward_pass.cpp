@@ -11,8 +11,8 @@
 
 namespace shadelab {
 
-ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& formats)
-    : context_(context), formats_(formats) {
+ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
+    : context_(context), colorFormat_(colorFormat) {
   VkDevice device = context.device();
   VkDescriptorSetLayoutBinding bindings[] = {
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
@@ -60,19 +60,18 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   texturedFragment_ = loadShader(device, "forward_textured.frag");
 }
 
-void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool textured, bool blended) {
+void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended) {
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool texturedVariant : {false, true})
       for (bool blendedVariant : {false, true}) {
-        VariantKey key{ShadingModel(model), lights, samples, texturedVariant, blendedVariant};
+        VariantKey key{ShadingModel(model), lights, target, texturedVariant, blendedVariant};
         bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
         if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
       }
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples, textured, blended] = key;
-  const AttachmentFormats& formats = formats_;
+  const auto& [model, lights, target, textured, blended] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -140,13 +139,13 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VkSampleCountFlagBits(samples);
+  multisample.rasterizationSamples = VkSampleCountFlagBits(target.samples);
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
   // Translucent surfaces must not hide what is drawn behind them later.
   depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  depth.depthCompareOp = depthCompareOp(target.depth);
   VkPipelineColorBlendAttachmentState blendAttachment{};
   // "Over": colour = a src + (1 - a) dst with a = 1 - transparency; the
   // target's alpha stays as the clear left it.
@@ -169,8 +168,8 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &formats.color;
-  rendering.depthAttachmentFormat = formats.depth;
+  rendering.pColorAttachmentFormats = &colorFormat_;
+  rendering.depthAttachmentFormat = depthFormat(target.depth);
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
   info.stageCount = uint32_t(stages.size());
@@ -190,7 +189,7 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   return Pipeline(context_.device(), pipeline);
 }
 
-void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
+void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
                          VkDescriptorSet frameSet, const GpuScene& scene,
                          std::span<const DrawItem> draws, const VkViewport& viewport) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
@@ -209,7 +208,7 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t sampl
     std::pair<bool, bool> variant{draw.textured, draw.transparent};
     if (bound != variant) {
       auto pipeline =
-          pipelines_.find({model, scene.lights, samples, draw.textured, draw.transparent});
+          pipelines_.find({model, scene.lights, target, draw.textured, draw.transparent});
       assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
       bound = variant;
