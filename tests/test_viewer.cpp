@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/glsl_compiler.h"
+#include "core/lod.h"
 #include "core/scene.h"
 #include "gpu_test_support.h"
 #include "view/camera_controller.h"
@@ -159,13 +160,20 @@ TEST_F(Viewer, SplitScreenMatchesHeadlessSplitAndReportsErrors) {
 }
 
 TEST_F(Viewer, UnavailableFeaturesSaySo) {
-  CommandResult r = view("key E\nkey A\nframes 1\n");
+  CommandResult r = view("key E\nframes 1\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* feature : {"environment mapping", "automatic tessellation"})
-    EXPECT_NE(r.output.find(std::string(feature) + ": not available in this build"),
-              std::string::npos)
-        << feature << "\n"
-        << r.output;
+  EXPECT_NE(r.output.find("environment mapping: not available in this build"), std::string::npos)
+      << r.output;
+}
+
+TEST_F(Viewer, AutoTessellationMatchesHeadlessTessAuto) {
+  CommandResult r = view("key O\nkey A\nframes 2\nscreenshot auto.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("automatic tessellation for this view"), std::string::npos) << r.output;
+  Scene scene = builtinScene("default");
+  tessellateForView(scene, ViewSize{scene.camera, kWidth, kHeight}, 0.5f);
+  ImageU8 shot = readImageU8(path("auto.png"));
+  EXPECT_TRUE(matchesImage(headless(scene, ShadingModel::Phong), shot));
 }
 
 TEST_F(Viewer, TextureKeysMatchHeadlessRendersWithTheSameOptions) {
@@ -319,8 +327,8 @@ void replaceInFile(const fs::path& file, const std::string& from, const std::str
 TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   fs::path shaders = shaderCopy(dir);
   // The edited shader swaps red and blue: a change that is easy to measure.
-  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, 1.0);",
-                "outColor = vec4(color.bgr, 1.0);");
+  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, draw.kd.w);",
+                "outColor = vec4(color.bgr, draw.kd.w);");
   CommandResult r =
       view("key O\nframes 2\nscreenshot before.png\nkey R\nframes 2\nscreenshot after.png\n", "",
            "SHADELAB_SHADER_DIR=" + shaders.string());
@@ -346,7 +354,8 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
 
 TEST_F(Viewer, ShaderCompileErrorIsShownAndLastGoodPipelineKept) {
   fs::path shaders = shaderCopy(dir);
-  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, 1.0);", "outColor = colour;");
+  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, draw.kd.w);",
+                "outColor = colour;");
   CommandResult r = view("key O\nkey R\nframes 2\nscreenshot after.png\n", "",
                          "SHADELAB_SHADER_DIR=" + shaders.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "core/mesh.h"
@@ -75,19 +76,21 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
   pipelines_.clear();
 }
 
-void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured) {
+void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended) {
   for (int model = 0; model < kShadingModelCount; ++model)
-    for (bool variant : {false, true}) {
-      VariantKey key{ShadingModel(model), lights, target, variant, false};
-      if ((!variant || textured) && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-    }
-  VariantKey wireframe{ShadingModel::Unlit, lights, target, false, true};
+    for (bool texturedVariant : {false, true})
+      for (bool blendedVariant : {false, true}) {
+        VariantKey key{ShadingModel(model), lights, target, texturedVariant, blendedVariant, false};
+        bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
+        if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+      }
+  VariantKey wireframe{ShadingModel::Unlit, lights, target, false, false, true};
   if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
     pipelines_[wireframe] = createPipeline(wireframe);
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, target, textured, wireframe] = key;
+  const auto& [model, lights, target, textured, blended, wireframe] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -166,12 +169,22 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
+  // Translucent surfaces must not hide what is drawn behind them later.
+  depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;
   depth.depthCompareOp = depthCompareOp(target.depth);
   // Edges pass where they touch the surface they outline.
   if (wireframe && depth.depthCompareOp == VK_COMPARE_OP_LESS)
     depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
   VkPipelineColorBlendAttachmentState blendAttachment{};
+  // "Over": colour = a src + (1 - a) dst with a = 1 - transparency; the
+  // target's alpha stays as the clear left it.
+  blendAttachment.blendEnable = blended ? VK_TRUE : VK_FALSE;
+  blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+  blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+  blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
@@ -207,29 +220,27 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
                          VkDescriptorSet frameSet, const GpuScene& scene,
-                         const VkViewport& viewport) const {
+                         std::span<const DrawItem> draws, const VkViewport& viewport) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto plain = pipelines_.find({model, scene.lights, target, false, false});
-  auto textured = pipelines_.find({model, scene.lights, target, true, false});
-  assert(plain != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, plain->second);
-  bool texturedBound = false;
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
                           nullptr);
   VkDeviceSize offset = 0;
   VkBuffer vertexBuffer = scene.vertices.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+  std::optional<std::pair<bool, bool>> bound;  // (textured, blended) of the bound pipeline
   VkDescriptorSet materialSet = VK_NULL_HANDLE;
-  for (const DrawItem& draw : scene.draws) {
-    if (draw.textured != texturedBound) {
-      assert(textured != pipelines_.end() && "ForwardPass::prepare() not called with textured");
-      texturedBound = draw.textured;
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                        (texturedBound ? textured : plain)->second);
+  for (const DrawItem& draw : draws) {
+    std::pair<bool, bool> variant{draw.textured, draw.transparent};
+    if (bound != variant) {
+      auto pipeline =
+          pipelines_.find({model, scene.lights, target, draw.textured, draw.transparent, false});
+      assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
+      bound = variant;
     }
     if (draw.textured && draw.materialSet != materialSet) {
       assert(draw.materialSet != VK_NULL_HANDLE && "textured draw without its material set");
@@ -247,13 +258,14 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout t
 
 void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
                                   VkDescriptorSet frameSet, const GpuScene& scene,
+                                  std::span<const DrawItem> draws,
                                   const VkViewport& viewport) const {
   if (!context_.features().fillModeNonSolid) return;
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({ShadingModel::Unlit, scene.lights, target, false, true});
+  auto pipeline = pipelines_.find({ShadingModel::Unlit, scene.lights, target, false, false, true});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
@@ -262,7 +274,7 @@ void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
   VkBuffer vertexBuffer = scene.vertices.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
-  for (const DrawItem& draw : scene.draws) {
+  for (const DrawItem& draw : draws) {
     // Unlit writes kd: every edge in one light grey, textured or not.
     gpu::DrawConstants constants = draw.constants;
     constants.kd = glm::vec4(0.9f, 0.9f, 0.9f, 1.0f);

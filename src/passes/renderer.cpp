@@ -225,7 +225,7 @@ void Renderer::prepare(const GpuScene& scene, const RenderSettings& settings) {
   bool textured = std::any_of(scene.draws.begin(), scene.draws.end(),
                               [](const DrawItem& draw) { return draw.textured; });
   TargetLayout layout{settings.msaaSamples, settings.depth};
-  forward_.prepare(scene.lights, layout, textured);
+  forward_.prepare(scene.lights, layout, textured, scene.anyTransparent);
   ensureTarget(settings.width, settings.height, layout);
 }
 
@@ -244,7 +244,7 @@ VkCommandBuffer Renderer::beginFrame() {
 }
 
 void Renderer::recordScene(const GpuScene& scene, const Scene& source,
-                           const RenderSettings& settings) {
+                           const RenderSettings& settings, RenderStats& stats) {
   Frame& frame = frames_[frameIndex_ % kFramesInFlight];
   prepare(scene, settings);
   ensureObjectCapacity(frame, uint32_t(source.objects.size()));
@@ -256,6 +256,11 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
+  std::vector<DrawItem> draws = visibleDraws(scene, view, projection, settings.frustumCulling,
+                                              stats.culledDraws);
+  stats.drawCalls = uint32_t(draws.size());
+  stats.triangles = 0;
+  for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
 
   VkCommandBuffer cmd = frame.cmd;
@@ -271,9 +276,9 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
     float left = std::floor(columnWidth * float(i));
     float right = std::floor(columnWidth * float(i + 1));
     VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
-    forward_.record(cmd, models[i], target_.layout, frame.set, scene, viewport);
+    forward_.record(cmd, models[i], target_.layout, frame.set, scene, draws, viewport);
     if (settings.wireframe)
-      forward_.recordWireframe(cmd, target_.layout, frame.set, scene, viewport);
+      forward_.recordWireframe(cmd, target_.layout, frame.set, scene, draws, viewport);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
@@ -341,14 +346,12 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 
   RenderResult result;
-  result.stats.triangles = gpuScene.triangles;
-  result.stats.drawCalls = uint32_t(gpuScene.draws.size());
   result.stats.deviceMemoryBytes = deviceMemoryInUse();
   lastCompletion_ = nowMs();
   for (uint32_t i = 0; i < settings.frames; ++i) {
     waitForFrame(result.stats);
     beginFrame();
-    recordScene(gpuScene, scene, settings);
+    recordScene(gpuScene, scene, settings, result.stats);
     if (i + 1 == settings.frames) recordReadback(readback);
     submitFrame();
   }

@@ -32,6 +32,7 @@ struct RenderSettings {
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
   TextureOptions textures;  // --filter override, --bump, --mip-tint
   DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
+  bool frustumCulling = true;  // off only to show that culling changes no pixel
   bool wireframe = false;  // triangle edges drawn over the shaded image (needs fillModeNonSolid)
 };
 
@@ -41,8 +42,9 @@ struct RenderStats {
   // it (a readback; the viewer's blit, overlay and screenshot copy).
   std::vector<double> frameDeviceMs;
   std::vector<double> wallMs;    // per frame, interval between successive frame completions
-  uint64_t triangles = 0;        // submitted per frame
-  uint32_t drawCalls = 0;
+  uint64_t triangles = 0;        // submitted per frame (after culling)
+  uint32_t drawCalls = 0;        // submitted per frame (after culling)
+  uint32_t culledDraws = 0;      // objects outside the view frustum, not drawn
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;
@@ -88,7 +90,9 @@ class Renderer {
   // Waits for the oldest frame in flight and appends its timings to `stats`.
   void waitForFrame(RenderStats& stats);
   VkCommandBuffer beginFrame();
-  void recordScene(const GpuScene& scene, const Scene& source, const RenderSettings& settings);
+  // Sets stats' per-frame counts (draws and triangles after culling).
+  void recordScene(const GpuScene& scene, const Scene& source, const RenderSettings& settings,
+                   RenderStats& stats);
   // Copies the colour target into `readback` (width * height * 8 bytes, host-visible).
   void recordReadback(const Buffer& readback);
   void submitFrame(const FrameSync& sync = {});

@@ -281,7 +281,9 @@ bool Viewer::drawFrame() {
   settings_.height = extent.height;
   scene_.camera = camera_.camera();
   VkCommandBuffer cmd = renderer_.beginFrame();
-  renderer_.recordScene(gpuScene_, scene_, settings_);
+  RenderStats counts;
+  renderer_.recordScene(gpuScene_, scene_, settings_, counts);
+  submittedTriangles_ = counts.triangles;
 
   SlotWork& work = slotWork_[slot];
   bool metricsDue = !settings_.splitModels.empty() &&

@@ -79,6 +79,7 @@ class Viewer {
   void setModel(ShadingModel model);
   void setTessellation(float scale);
   void applyTextureOptions(const std::string& message);
+  void autoTessellate();
   void reloadShaders();
   std::string nextScreenshotName() const;
 
@@ -109,6 +110,7 @@ class Viewer {
 
   std::deque<double> deviceMs_, frameDeviceMs_, wallMs_;  // the last 120 frames
   uint64_t framesDrawn_ = 0;
+  uint64_t submittedTriangles_ = 0;  // last frame, after frustum culling, per view
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;
   std::vector<std::pair<ShadingModel, ImageDifference>> splitErrors_;
   std::string message_;

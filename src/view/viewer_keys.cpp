@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/glsl_compiler.h"
+#include "core/lod.h"
 #include "core/stats.h"
 #include "core/texture.h"
 #include "view/viewer.h"
@@ -70,8 +71,8 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
        }},
       {'T', "T", "tessellation x2", [](Viewer& v) { v.setTessellation(v.tessellation_ * 2.0f); }},
       {'G', "G", "tessellation / 2", [](Viewer& v) { v.setTessellation(v.tessellation_ * 0.5f); }},
-      {'A', "A", "automatic tessellation (screen-space error bound)",
-       [](Viewer& v) { v.notAvailable("automatic tessellation"); }},
+      {'A', "A", "automatic tessellation for the current view (chord error <= 0.5 px)",
+       [](Viewer& v) { v.autoTessellate(); }},
       {'B', "B", "bump mapping (normal and height maps) on / off",
        [](Viewer& v) {
          v.settings_.textures.bump = !v.settings_.textures.bump;
@@ -146,6 +147,18 @@ void Viewer::setTessellation(float scale) {
   say(text);
 }
 
+// As render --tess auto, for the view on screen now; the camera may move on
+// afterwards (press A again), T and G go back to a fixed factor.
+void Viewer::autoTessellate() {
+  constexpr float kMaxErrorPixels = 0.5f;  // render --tess-error's default
+  VkExtent2D extent = swapchain_.extent();
+  tessellateForView(scene_, ViewSize{camera_.camera(), extent.width, extent.height},
+                    kMaxErrorPixels);
+  gpuScene_ = renderer_.upload(scene_, settings_.textures);
+  say("automatic tessellation for this view (chord error <= 0.5 px): " +
+      withThousands(gpuScene_.triangles) + " triangles");
+}
+
 // The texture options are baked into the material sets at upload.
 void Viewer::applyTextureOptions(const std::string& message) {
   gpuScene_ = renderer_.upload(scene_, settings_.textures);
@@ -190,8 +203,9 @@ OverlayText Viewer::overlayText() const {
   text.status.push_back("device: scene " + formatMs(median(device)) + ", frame " +
                         formatMs(median(frameDevice)) + "; wall " + formatMs(median(wall)) +
                         " (medians of " + std::to_string(device.size()) + ")");
-  text.status.push_back("triangles " + withThousands(gpuScene_.triangles * views) +
-                        (views > 1 ? " (" + std::to_string(views) + " views)" : ""));
+  text.status.push_back("triangles " + withThousands(submittedTriangles_ * views) + " submitted" +
+                        (views > 1 ? " (" + std::to_string(views) + " views)" : "") + ", " +
+                        withThousands(gpuScene_.triangles) + " in the scene");
   std::string models;
   for (ShadingModel model : settings_.splitModels)
     models += (models.empty() ? "" : " | ") + std::string(shadingModelName(model));
