@@ -19,5 +19,6 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addInfoCommand(CLI::App& app, const GlobalOptions& global);
+CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace shadelab

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
       {"compare", addCompareCommand(app, global)},
       {"bench", addBenchCommand(app, global)},
       {"info", addInfoCommand(app, global)},
+      {"trace", addTraceCommand(app, global)},
   };
   try {
     app.parse(argc, argv);
