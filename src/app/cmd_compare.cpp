@@ -1,11 +1,10 @@
 // shadelab compare: the shading models side by side in viewports of one
 // frame (one camera), each with a heatmap of its difference from a reference
 // and its error numbers; the numbers also go to a JSON file beside the sheet.
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app/cli_common.h"
@@ -13,6 +12,7 @@
 #include "core/errors.h"
 #include "core/files.h"
 #include "core/metrics.h"
+#include "core/raytracer.h"
 #include "core/scene_loader.h"
 #include "core/sheet.h"
 #include "passes/renderer.h"
@@ -25,21 +25,30 @@ struct CompareOptions {
   std::string output;
   std::string size = "480x270";
   std::string modes = "flat,gouraud,phong,blinn-phong";
-  std::string reference = "raster";
+  std::string reference = "trace";
+  uint32_t samplesPerPixel = 4;
 };
 
-// A reference is anything that renders the scene at a size; `trace` joins
-// this table when the ray tracer lands.
+// A reference is anything that renders the scene at a size.
 struct Reference {
   std::string description;
-  std::function<ImageRgba(Renderer&, const Scene&, Size)> render;
+  std::function<ImageRgba(Renderer&, const Scene&, Size, uint32_t spp)> render;
 };
 
 const std::map<std::string, Reference>& references() {
   static const std::map<std::string, Reference> table = {
+      {"trace",
+       {"Whitted ray tracer",
+        [](Renderer&, const Scene& scene, Size size, uint32_t spp) {
+          TraceSettings settings;
+          settings.width = size.width;
+          settings.height = size.height;
+          settings.samplesPerPixel = spp;
+          return RayTracer(scene).render(settings).image;
+        }}},
       {"raster",
        {"Phong, 4x tessellation, 4x MSAA",
-        [](Renderer& renderer, const Scene& scene, Size size) {
+        [](Renderer& renderer, const Scene& scene, Size size, uint32_t) {
           Scene fine = scene;
           fine.retessellate(4.0f);
           RenderSettings settings{size.width, size.height, ShadingModel::Phong};
@@ -70,7 +79,8 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
   auto reference = references().find(options.reference);
   if (reference == references().end())
-    throw InputError("--reference '" + options.reference + "': expected raster");
+    throw InputError("--reference '" + options.reference + "': expected trace or raster");
+  checkSamplesPerPixel(options.samplesPerPixel);
   std::filesystem::path sheetPath(options.output);
   if (sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
@@ -85,31 +95,43 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
     settings.splitModels = models;
     split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
-    expected = encodeSrgb8(reference->second.render(renderer, scene, cell));
+    expected =
+        encodeSrgb8(reference->second.render(renderer, scene, cell, options.samplesPerPixel));
   }
 
-  std::vector<SheetCell> renders{{expected, "reference", {reference->second.description}}};
-  std::vector<SheetCell> heatmaps{{ImageU8(), "", {"heatmaps: |difference| x8", "black = equal"}}};
+  std::string description = reference->second.description;
+  if (options.reference == "trace")
+    description += ", " + std::to_string(options.samplesPerPixel) + " spp";
+  std::vector<SheetCell> renders{{expected, "reference", {description}}};
+  std::vector<SheetCell> heatmaps{
+      {ImageU8(), "", {"heatmaps: FLIP error", "black 0 .. yellow 1", "67 pixels/degree"}}};
   nlohmann::json report = {{"scene", scene.name},
                            {"size", options.size},
-                           {"reference", reference->second.description},
+                           {"reference", description},
                            {"modes", nlohmann::json::array()}};
-  std::printf("%-12s %10s %10s %8s\n", "mode", "RMSE", "PSNR dB", "max");
+  std::printf("%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
+              "mean FLIP");
   for (size_t i = 0; i < models.size(); ++i) {
     std::string name(shadingModelName(models[i]));
     ImageU8 image = crop(split, uint32_t(i) * cell.width, cell.width);
     ImageDifference difference = compareImages(expected, image);
+    const double ssim = structuralSimilarity(expected, image).mean;
+    const MetricMap flip = flipError(expected, image);
     renders.push_back({image, name, {}});
-    heatmaps.push_back({differenceHeatmap(expected, image), name + " vs reference",
-                        {"RMSE " + fixed(difference.rmse, 3) + "  PSNR " +
-                             fixed(difference.psnr, 2) + " dB",
-                         "max difference " + std::to_string(difference.maxDifference) + "/255"}});
+    heatmaps.push_back(
+        {magmaHeatmap(flip),
+         name + " vs reference",
+         {"RMSE " + fixed(difference.rmse, 3) + "  PSNR " + fixed(difference.psnr, 2) + " dB",
+          "SSIM " + fixed(ssim, 4) + "  FLIP " + fixed(flip.mean, 4),
+          "max difference " + std::to_string(difference.maxDifference) + "/255"}});
     report["modes"].push_back({{"mode", name},
                                {"rmse", difference.rmse},
                                {"psnr", difference.psnr},
+                               {"ssim", ssim},
+                               {"flip", flip.mean},
                                {"maxDifference", difference.maxDifference}});
-    std::printf("%-12s %10.3f %10.2f %8d\n", name.c_str(), difference.rmse, difference.psnr,
-                difference.maxDifference);
+    std::printf("%-12s %10.3f %10.2f %8d %8.4f %10.4f\n", name.c_str(), difference.rmse,
+                difference.psnr, difference.maxDifference, ssim, flip.mean);
   }
   writeImage(composeSheet({renders, heatmaps}), sheetPath);
   writeTextFile(jsonPath, report.dump(2) + "\n");
@@ -130,8 +152,16 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command->add_option("--modes", options->modes, "Comma-separated shading models")
       ->capture_default_str();
-  command->add_option("--reference", options->reference, "Reference renderer: raster")
+  command
+      ->add_option("--reference", options->reference,
+                   "Reference: trace (the CPU Whitted ray tracer) or raster (Phong at 4x "
+                   "tessellation with 4x MSAA)")
       ->capture_default_str();
+  command
+      ->add_option("--spp", options->samplesPerPixel,
+                   "Samples per pixel of the traced reference, a square (1, 4, 9, ...)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 256u));
   return [options, &global] { return runCompare(*options, global); };
 }
 

@@ -23,6 +23,7 @@ struct TraceOptions {
 
 int runTrace(const TraceOptions& options) {
   Size size = parseSize(options.size, "--size");
+  checkSamplesPerPixel(options.samplesPerPixel);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   TraceSettings settings;

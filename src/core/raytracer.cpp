@@ -340,15 +340,20 @@ glm::vec3 RayTracer::traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint
   return shade(ray, *hit, viewer, depth, weight, settings, stats);
 }
 
+void checkSamplesPerPixel(uint32_t samplesPerPixel) {
+  const uint32_t grid = uint32_t(std::lround(std::sqrt(double(samplesPerPixel))));
+  if (samplesPerPixel == 0 || grid * grid != samplesPerPixel || grid > 16)
+    throw InputError("samples per pixel " + std::to_string(samplesPerPixel) +
+                     ": expected a square number n*n from 1 to 256 (1, 4, 9, 16, ...)");
+}
+
 TraceResult RayTracer::render(const TraceSettings& settings) const {
   if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
       settings.height > 16384)
     throw InputError("trace size " + std::to_string(settings.width) + "x" +
                      std::to_string(settings.height) + ": expected 1..16384 on each side");
+  checkSamplesPerPixel(settings.samplesPerPixel);
   const uint32_t grid = uint32_t(std::lround(std::sqrt(double(settings.samplesPerPixel))));
-  if (settings.samplesPerPixel == 0 || grid * grid != settings.samplesPerPixel || grid > 16)
-    throw InputError("samples per pixel " + std::to_string(settings.samplesPerPixel) +
-                     ": expected a square number n*n from 1 to 256 (1, 4, 9, 16, ...)");
   const CameraRays camera(scene_.camera, settings.width, settings.height);
   TraceResult result{ImageRgba(settings.width, settings.height), {}};
   uint32_t threadCount = settings.threads ? settings.threads : std::thread::hardware_concurrency();

@@ -125,6 +125,9 @@ class RayTracer {
   std::vector<TracedObject> objects_;
 };
 
+// Throws InputError unless `samplesPerPixel` is a square n * n, 1..256.
+void checkSamplesPerPixel(uint32_t samplesPerPixel);
+
 // The hooks textures and environments will fill: the material at a hit (a
 // texture lookup goes here) and the colour of a ray that hits nothing (an
 // environment lookup goes here). Today: the object's material and the scene's
