@@ -27,28 +27,30 @@ struct CompareOptions {
   std::string modes = "flat,gouraud,phong,blinn-phong";
   std::string reference = "trace";
   uint32_t samplesPerPixel = 4;
+  std::string shadows = "on";
 };
 
 // A reference is anything that renders the scene at a size.
 struct Reference {
   std::string description;
-  std::function<ImageRgba(Renderer&, const Scene&, Size, uint32_t spp)> render;
+  std::function<ImageRgba(Renderer&, const Scene&, Size, const CompareOptions&)> render;
 };
 
 const std::map<std::string, Reference>& references() {
   static const std::map<std::string, Reference> table = {
       {"trace",
        {"Whitted ray tracer",
-        [](Renderer&, const Scene& scene, Size size, uint32_t spp) {
+        [](Renderer&, const Scene& scene, Size size, const CompareOptions& options) {
           TraceSettings settings;
           settings.width = size.width;
           settings.height = size.height;
-          settings.samplesPerPixel = spp;
+          settings.samplesPerPixel = options.samplesPerPixel;
+          settings.shadows = options.shadows == "on";
           return RayTracer(scene).render(settings).image;
         }}},
       {"raster",
        {"Phong, 4x tessellation, 4x MSAA",
-        [](Renderer& renderer, const Scene& scene, Size size, uint32_t) {
+        [](Renderer& renderer, const Scene& scene, Size size, const CompareOptions&) {
           Scene fine = scene;
           fine.retessellate(4.0f);
           RenderSettings settings{size.width, size.height, ShadingModel::Phong};
@@ -95,13 +97,13 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
     settings.splitModels = models;
     split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
-    expected =
-        encodeSrgb8(reference->second.render(renderer, scene, cell, options.samplesPerPixel));
+    expected = encodeSrgb8(reference->second.render(renderer, scene, cell, options));
   }
 
   std::string description = reference->second.description;
   if (options.reference == "trace")
-    description += ", " + std::to_string(options.samplesPerPixel) + " spp";
+    description += ", " + std::to_string(options.samplesPerPixel) + " spp" +
+                   (options.shadows == "on" ? "" : ", no shadows");
   std::vector<SheetCell> renders{{expected, "reference", {description}}};
   std::vector<SheetCell> heatmaps{
       {ImageU8(), "", {"heatmaps: FLIP error", "black 0 .. yellow 1", "67 pixels/degree"}}};
@@ -162,6 +164,11 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
                    "Samples per pixel of the traced reference, a square (1, 4, 9, ...)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 256u));
+  command
+      ->add_option("--shadows", options->shadows,
+                   "Shadows in the traced reference: on, or off (to compare shading alone)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   return [options, &global] { return runCompare(*options, global); };
 }
 

@@ -19,6 +19,7 @@ struct TraceOptions {
   uint32_t samplesPerPixel = 16;
   uint32_t depth = 5;
   uint32_t threads = 0;
+  std::string shadows = "on";
 };
 
 int runTrace(const TraceOptions& options) {
@@ -32,6 +33,7 @@ int runTrace(const TraceOptions& options) {
   settings.samplesPerPixel = options.samplesPerPixel;
   settings.maxDepth = options.depth;
   settings.threads = options.threads;
+  settings.shadows = options.shadows == "on";
 
   const auto start = std::chrono::steady_clock::now();
   RayTracer tracer(scene);
@@ -83,6 +85,9 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
                    "Worker threads (0: one per hardware thread); the image does not depend on it")
       ->capture_default_str()
       ->check(CLI::Range(0u, 256u));
+  command->add_option("--shadows", options->shadows, "Shadow rays: on, or off (as the rasteriser)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   return [options] { return runTrace(*options); };
 }
 

@@ -287,11 +287,14 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
     }
     // The equation adds nothing where N.L <= 0: no shadow ray needed there.
     if (!(glm::dot(toLight, hit.shadingNormal) > 0.0f)) continue;
-    Ray shadow = offsetRay(hit, toLight, settings.epsilon);
-    if (point) shadow.direction = light.position - shadow.origin;  // the segment is 0 < t < 1
-    ++stats.shadowRays;
-    const float passed = transmittance(shadow, point ? 1.0f : kInfinity);
-    if (passed <= 0.0f) continue;
+    float passed = 1.0f;
+    if (settings.shadows) {
+      Ray shadow = offsetRay(hit, toLight, settings.epsilon);
+      if (point) shadow.direction = light.position - shadow.origin;  // the segment is 0 < t < 1
+      ++stats.shadowRays;
+      passed = transmittance(shadow, point ? 1.0f : kInfinity);
+      if (passed <= 0.0f) continue;
+    }
     gpu::GpuLight& out = frame.lights[visible++];
     out.position = point ? glm::vec4(light.position - viewer, 1.0f) : glm::vec4(toLight, 0.0f);
     out.type.x = point ? LIGHT_POINT : LIGHT_DIRECTIONAL;

@@ -40,7 +40,8 @@ struct TraceSettings {
   // A secondary ray is not traced when its weight (product of kr and kt on
   // the way) falls below this: it cannot change an 8-bit pixel.
   float minContribution = 1.0f / 512.0f;
-  bool blinn = false;  // Blinn-Phong (N.H)^n instead of Phong (R.V)^n
+  bool blinn = false;   // Blinn-Phong (N.H)^n instead of Phong (R.V)^n
+  bool shadows = true;  // false: every light reaches every surface, as in the rasteriser
 };
 
 struct TraceStats {
