@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # README command 1: set up, build, and run the main job on the built-in
-# default scene, writing one image per shading model into out/.
+# default scene, writing one image per shading model, the ray-traced
+# reference and the comparison sheet into out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh release
@@ -11,5 +12,6 @@ mkdir -p out
 for mode in flat gouraud phong blinn-phong; do
   "$bin" render --mode "$mode" --size 1280x720 -o "out/default-$mode.png"
 done
+"$bin" trace --size 1280x720 -o out/default-trace.png
 "$bin" compare -o out/compare.png
 echo "demo: images written to out/"

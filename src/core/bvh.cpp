@@ -40,14 +40,18 @@ float surfaceArea(const Bounds& box) {
 
 }  // namespace
 
-bool intersectTriangle(const Ray& ray, glm::vec3 v0, glm::vec3 edge1, glm::vec3 edge2, float tMin,
-                       float tMax, TriangleHit& hit) {
+namespace {
+
+// Moller-Trumbore with the squared lengths the parallel test needs passed in
+// (the BVH precomputes |e1 x e2|^2 per triangle and |d|^2 per ray).
+inline bool hitTriangle(const Ray& ray, float directionLength2, glm::vec3 v0, glm::vec3 edge1,
+                        glm::vec3 edge2, float normalLength2, float tMin, float tMax,
+                        TriangleHit& hit) {
   const glm::vec3 p = glm::cross(ray.direction, edge2);
   const float det = glm::dot(edge1, p);
-  // det = -d.(e1 x e2): compare it with |d| |e1 x e2| to get the angle between
-  // the ray and the plane; NaN fails the test too.
-  const float scale = glm::length(ray.direction) * glm::length(glm::cross(edge1, edge2));
-  if (!(std::abs(det) > 1e-6f * scale)) return false;
+  // det = -d.(e1 x e2): against |d| |e1 x e2| it is the sine of the angle
+  // between the ray and the plane; NaN fails the test too.
+  if (!(det * det > 1e-12f * directionLength2 * normalLength2)) return false;
   const float inverseDet = 1.0f / det;
   const glm::vec3 s = ray.origin - v0;
   const float u = glm::dot(s, p) * inverseDet;
@@ -63,15 +67,35 @@ bool intersectTriangle(const Ray& ray, glm::vec3 v0, glm::vec3 edge1, glm::vec3 
   return true;
 }
 
+// fmin/fmax semantics (a NaN operand is ignored) without the libm calls.
+inline float minIgnoringNan(float a, float b) {
+  return a < b || b != b ? a : b;
+}
+inline float maxIgnoringNan(float a, float b) {
+  return a > b || b != b ? a : b;
+}
+
+float squaredLength(glm::vec3 v) {
+  return glm::dot(v, v);
+}
+
+}  // namespace
+
+bool intersectTriangle(const Ray& ray, glm::vec3 v0, glm::vec3 edge1, glm::vec3 edge2, float tMin,
+                       float tMax, TriangleHit& hit) {
+  return hitTriangle(ray, squaredLength(ray.direction), v0, edge1, edge2,
+                     squaredLength(glm::cross(edge1, edge2)), tMin, tMax, hit);
+}
+
 bool intersectBounds(const Bounds& box, const Ray& ray, glm::vec3 inverseDirection, float tMin,
                      float tMax, float& tEntry) {
   for (int axis = 0; axis < 3; ++axis) {
     const float t0 = (box.min[axis] - ray.origin[axis]) * inverseDirection[axis];
     const float t1 = (box.max[axis] - ray.origin[axis]) * inverseDirection[axis];
-    // fmin/fmax drop the NaN of 0 * infinity (a ray in a slab's plane),
-    // leaving that axis unconstrained.
-    tMin = std::fmax(tMin, std::fmin(t0, t1));
-    tMax = std::fmin(tMax, std::fmax(t0, t1));
+    // The NaN of 0 * infinity (a ray in a slab's plane) is ignored, leaving
+    // that axis unconstrained.
+    tMin = maxIgnoringNan(tMin, minIgnoringNan(t0, t1));
+    tMax = minIgnoringNan(tMax, maxIgnoringNan(t0, t1));
   }
   tEntry = tMin;
   return tMin <= tMax;
@@ -105,7 +129,7 @@ Bvh::Bvh(const Mesh& mesh) {
     const glm::vec3 a = mesh.vertices[mesh.indices[3 * index]].position;
     const glm::vec3 b = mesh.vertices[mesh.indices[3 * index + 1]].position;
     const glm::vec3 c = mesh.vertices[mesh.indices[3 * index + 2]].position;
-    triangles_.push_back({a, b - a, c - a, index});
+    triangles_.push_back({a, b - a, c - a, squaredLength(glm::cross(b - a, c - a)), index});
   }
 }
 
@@ -205,6 +229,7 @@ uint32_t Bvh::largestLeaf() const {
 bool Bvh::intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) const {
   if (triangles_.empty()) return false;
   const glm::vec3 inverse = 1.0f / ray.direction;
+  const float directionLength2 = squaredLength(ray.direction);
   bool found = false;
   std::array<uint32_t, kStackSize> stack;
   uint32_t top = 0;
@@ -216,7 +241,8 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) co
     if (node.count > 0) {
       for (uint32_t i = node.first; i < node.first + node.count; ++i) {
         const Triangle& tri = triangles_[i];
-        if (intersectTriangle(ray, tri.v0, tri.edge1, tri.edge2, tMin, tMax, hit)) {
+        if (hitTriangle(ray, directionLength2, tri.v0, tri.edge1, tri.edge2, tri.normalLength2,
+                        tMin, tMax, hit)) {
           hit.triangle = tri.index;
           tMax = hit.t;
           found = true;
@@ -246,6 +272,7 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) co
 uint32_t Bvh::countHits(const Ray& ray, float tMin, float tMax) const {
   if (triangles_.empty()) return 0;
   const glm::vec3 inverse = 1.0f / ray.direction;
+  const float directionLength2 = squaredLength(ray.direction);
   uint32_t hits = 0;
   std::array<uint32_t, kStackSize> stack;
   uint32_t top = 0;
@@ -258,7 +285,8 @@ uint32_t Bvh::countHits(const Ray& ray, float tMin, float tMax) const {
     if (node.count > 0) {
       for (uint32_t i = node.first; i < node.first + node.count; ++i) {
         const Triangle& tri = triangles_[i];
-        hits += intersectTriangle(ray, tri.v0, tri.edge1, tri.edge2, tMin, tMax, scratch);
+        hits += hitTriangle(ray, directionLength2, tri.v0, tri.edge1, tri.edge2, tri.normalLength2,
+                            tMin, tMax, scratch);
       }
       continue;
     }

@@ -50,6 +50,7 @@ class Bvh {
   };
   struct Triangle {
     glm::vec3 v0, edge1, edge2;
+    float normalLength2;  // |edge1 x edge2|^2, for the parallel test
     uint32_t index;
   };
 

@@ -16,6 +16,9 @@ namespace shadelab {
 namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// Past this, a finer tessellation costs more BVH build time than it removes
+// error: 256k triangles are far below a pixel at any size we trace.
+constexpr size_t kMaxTracedTriangles = 1u << 18;
 
 enum class Surface { Sphere, Plane, Box, Mesh };
 
@@ -169,9 +172,13 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
   for (const Object& object : scene.objects) {
     const ShapeDesc& shape = scene.shapes[object.mesh];
     if (surfaceOf(shape.kind) != Surface::Mesh || meshBvh[object.mesh]) continue;
-    meshes_.push_back(std::make_unique<Mesh>(shape.kind == ShapeKind::Custom
-                                                 ? scene.meshes[object.mesh]
-                                                 : buildShape(shape, tessellationScale)));
+    // Segments grow with the scale on both parameters, triangles with its
+    // square: stop where a mesh would pass kMaxTracedTriangles.
+    const float triangles = float(std::max<size_t>(1, scene.meshes[object.mesh].triangleCount()));
+    const float scale =
+        std::clamp(std::sqrt(float(kMaxTracedTriangles) / triangles), 1.0f, tessellationScale);
+    meshes_.push_back(std::make_unique<Mesh>(
+        shape.kind == ShapeKind::Custom ? scene.meshes[object.mesh] : buildShape(shape, scale)));
     bvhs_.push_back(std::make_unique<Bvh>(*meshes_.back()));
     meshBvh[object.mesh] = bvhs_.back().get();
     meshSource[object.mesh] = meshes_.back().get();

@@ -91,8 +91,9 @@ class RayTracer {
  public:
   // Builds one BVH per mesh that has no exact intersection (torus, teapot,
   // custom meshes). Procedural curved meshes are rebuilt at
-  // `tessellationScale` times their base tessellation first, so the
-  // reference is closer to the true surface than the rasterised mesh.
+  // `tessellationScale` times their tessellation first (up to 256k
+  // triangles per mesh), so the reference is closer to the true surface
+  // than the rasterised mesh.
   // `scene` must outlive the tracer.
   explicit RayTracer(const Scene& scene, float tessellationScale = 4.0f);
   ~RayTracer();
