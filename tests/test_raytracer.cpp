@@ -246,6 +246,33 @@ TEST(RayTracer, LocalShadingIsTheIlluminationEquationInEyeSpace) {
   EXPECT_EQ(stats.shadowRays, 2u);
 }
 
+// Two facing mirrors and a ray bouncing between them: it stops at the depth
+// limit, or where its weight kr^k falls below the contribution threshold.
+TEST(RayTracer, RecursionStopsAtTheDepthOrTheContributionThreshold) {
+  auto bounces = [](float reflectivity, uint32_t maxDepth) {
+    Scene scene;
+    ShapeDesc plane{ShapeKind::Plane};
+    plane.size = 10.0f;
+    const uint32_t mesh = scene.addShape(plane);
+    Material mirror;
+    mirror.reflectivity = reflectivity;
+    scene.objects.push_back({"low", mesh, glm::mat4(1.0f), mirror});
+    scene.objects.push_back({"high", mesh, translation({0, 2, 0}), mirror});
+    RayTracer tracer(scene);
+    TraceSettings settings;
+    settings.maxDepth = maxDepth;
+    TraceStats stats;
+    const Ray ray{{0, 1, 0}, {0, -1, 0}};
+    const glm::vec3 colour = tracer.traceRay(ray, kInf, ray.origin, 0, 1.0f, settings, stats);
+    EXPECT_TRUE(std::isfinite(colour.r));
+    return stats.secondaryRays;
+  };
+  EXPECT_EQ(bounces(1.0f, 5), 5u);
+  EXPECT_EQ(bounces(1.0f, 0), 0u);
+  EXPECT_EQ(bounces(0.5f, 20), 9u);    // 0.5^9 = 1/512 is the last ray worth tracing
+  EXPECT_EQ(bounces(0.001f, 20), 0u);  // below 1/512 at once
+}
+
 TEST(RayTracer, SampleCountsMustBeSquares) {
   EXPECT_NO_THROW(checkSamplesPerPixel(1));
   EXPECT_NO_THROW(checkSamplesPerPixel(16));

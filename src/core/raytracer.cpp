@@ -271,7 +271,10 @@ float RayTracer::transmittance(const Ray& ray, float tMax) const {
 
 Ray RayTracer::offsetRay(const SurfaceHit& hit, glm::vec3 direction, float epsilon) const {
   const float side = glm::dot(direction, hit.geometricNormal) >= 0.0f ? 1.0f : -1.0f;
-  return {hit.position + side * epsilon * hit.geometricNormal, direction};
+  // Rounding error grows with the coordinates' magnitude, so does the offset.
+  const glm::vec3 magnitude = glm::abs(hit.position);
+  const float scale = std::max({1.0f, magnitude.x, magnitude.y, magnitude.z});
+  return {hit.position + side * epsilon * scale * hit.geometricNormal, direction};
 }
 
 // Phong at the hit with the unshadowed lights only: the lights go into the

@@ -34,8 +34,10 @@ struct TraceSettings {
   // Reflection/refraction bounces after the primary ray; 0 is local shading.
   uint32_t maxDepth = 5;
   uint32_t threads = 0;  // 0: one per hardware thread
-  // New rays start this far (world units) off the surface, on the side they
-  // leave towards, against self-intersection ("shadow acne"); tests use 0.
+  // New rays start this far off the surface (world units, times the largest
+  // coordinate of the hit when that is above 1: float error grows with it),
+  // on the side they leave towards, against self-intersection ("shadow
+  // acne"); tests use 0.
   float epsilon = 1e-4f;
   // A secondary ray is not traced when its weight (product of kr and kt on
   // the way) falls below this: it cannot change an 8-bit pixel.
