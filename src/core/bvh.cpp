@@ -38,10 +38,6 @@ float surfaceArea(const Bounds& box) {
   return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
 }
 
-}  // namespace
-
-namespace {
-
 // Moller-Trumbore with the squared lengths the parallel test needs passed in
 // (the BVH precomputes |e1 x e2|^2 per triangle and |d|^2 per ray).
 inline bool hitTriangle(const Ray& ray, float directionLength2, glm::vec3 v0, glm::vec3 edge1,
@@ -77,6 +73,54 @@ inline float maxIgnoringNan(float a, float b) {
 
 float squaredLength(glm::vec3 v) {
   return glm::dot(v, v);
+}
+
+struct SahSplit {
+  int axis = -1;                                   // -1: no split separates anything
+  uint32_t bin = 0;                                // the left side holds bins 0..bin
+  float cost = std::numeric_limits<float>::max();  // sum of area * count over both sides
+};
+
+// Binned SAH (kBins bins per axis on the centroids' extent).
+SahSplit bestSahSplit(const std::vector<uint32_t>& order, const std::vector<glm::vec3>& centroids,
+                      const std::vector<Bounds>& boxes, uint32_t begin, uint32_t end,
+                      const Bounds& centroidBox) {
+  SahSplit best;
+  const uint32_t count = end - begin;
+  const glm::vec3 extent = centroidBox.max - centroidBox.min;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!(extent[axis] > 0.0f)) continue;
+    std::array<Bounds, kBins> bins;
+    bins.fill(emptyBounds());
+    std::array<uint32_t, kBins> binCounts{};
+    const float scale = float(kBins) / extent[axis];
+    for (uint32_t i = begin; i < end; ++i) {
+      const uint32_t index = order[i];
+      const uint32_t bin =
+          std::min(kBins - 1, uint32_t((centroids[index][axis] - centroidBox.min[axis]) * scale));
+      ++binCounts[bin];
+      grow(bins[bin], boxes[index]);
+    }
+    // Sweep from the right to get each split's right-hand side, then from the left.
+    std::array<float, kBins> rightCost{};
+    Bounds right = emptyBounds();
+    uint32_t rightCount = 0;
+    for (uint32_t b = kBins - 1; b > 0; --b) {
+      grow(right, bins[b]);
+      rightCount += binCounts[b];
+      rightCost[b] = rightCount ? surfaceArea(right) * float(rightCount) : 0.0f;
+    }
+    Bounds left = emptyBounds();
+    uint32_t leftCount = 0;
+    for (uint32_t b = 0; b + 1 < kBins; ++b) {
+      grow(left, bins[b]);
+      leftCount += binCounts[b];
+      if (leftCount == 0 || leftCount == count) continue;
+      const float cost = surfaceArea(left) * float(leftCount) + rightCost[b + 1];
+      if (cost < best.cost) best = {axis, b, cost};
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -133,8 +177,7 @@ Bvh::Bvh(const Mesh& mesh) {
   }
 }
 
-// Binned SAH (12 bins per axis on the centroids' extent); a node becomes a
-// leaf when splitting costs more than intersecting its triangles, unless it
+// A node becomes a leaf when splitting costs more than intersecting its triangles, unless it
 // holds more than kMaxLeafSize. Degenerate splits fall back to the median.
 void Bvh::build(uint32_t node, BuildInput& input, uint32_t begin, uint32_t end, uint32_t level) {
   depth_ = std::max(depth_, level);
@@ -147,42 +190,12 @@ void Bvh::build(uint32_t node, BuildInput& input, uint32_t begin, uint32_t end, 
   const uint32_t count = end - begin;
   if (count <= 1) return;
 
-  float bestCost = std::numeric_limits<float>::max();
-  int bestAxis = -1;
-  uint32_t bestBin = 0;
   const glm::vec3 extent = centroidBox.max - centroidBox.min;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (!(extent[axis] > 0.0f)) continue;
-    std::array<Bounds, kBins> bins;
-    bins.fill(emptyBounds());
-    std::array<uint32_t, kBins> binCounts{};
-    const float scale = float(kBins) / extent[axis];
-    for (uint32_t i = begin; i < end; ++i) {
-      uint32_t index = input.order[i];
-      uint32_t bin = std::min(
-          kBins - 1, uint32_t((input.centroids[index][axis] - centroidBox.min[axis]) * scale));
-      ++binCounts[bin];
-      grow(bins[bin], input.boxes[index]);
-    }
-    // Sweep from the right to get each split's right-hand side, then from the left.
-    std::array<float, kBins> rightCost{};
-    Bounds right = emptyBounds();
-    uint32_t rightCount = 0;
-    for (uint32_t b = kBins - 1; b > 0; --b) {
-      grow(right, bins[b]);
-      rightCount += binCounts[b];
-      rightCost[b] = rightCount ? surfaceArea(right) * float(rightCount) : 0.0f;
-    }
-    Bounds left = emptyBounds();
-    uint32_t leftCount = 0;
-    for (uint32_t b = 0; b + 1 < kBins; ++b) {
-      grow(left, bins[b]);
-      leftCount += binCounts[b];
-      if (leftCount == 0 || leftCount == count) continue;
-      const float cost = surfaceArea(left) * float(leftCount) + rightCost[b + 1];
-      if (cost < bestCost) bestCost = cost, bestAxis = axis, bestBin = b;
-    }
-  }
+  const SahSplit best =
+      bestSahSplit(input.order, input.centroids, input.boxes, begin, end, centroidBox);
+  const float bestCost = best.cost;
+  const int bestAxis = best.axis;
+  const uint32_t bestBin = best.bin;
   const float parentArea = std::max(surfaceArea(box), 1e-30f);
   const float splitCost = kTraversalCost + bestCost / parentArea;
   if (count <= kMaxLeafSize && (bestAxis < 0 || splitCost >= float(count))) return;
