@@ -1,6 +1,7 @@
 // shadelab compare: the shading models side by side in viewports of one
 // frame (one camera), each with a heatmap of its difference from a reference
 // and its error numbers; the numbers also go to a JSON file beside the sheet.
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -68,6 +69,20 @@ ImageU8 crop(const ImageU8& image, uint32_t x0, uint32_t width) {
   return result;
 }
 
+// The heatmaps' key: the FLIP ramp from 0 (left) to 1 (right) in a band
+// across the cell, on the sheet's background.
+ImageU8 flipLegend(uint32_t width, uint32_t height) {
+  MetricMap ramp{width, height, std::vector<float>(size_t(width) * height), 0.0};
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x)
+      ramp.values[size_t(y) * width + x] = float(x) / float(std::max(1u, width - 1));
+  ImageU8 legend = magmaHeatmap(ramp);
+  for (uint32_t y = 0; y < height; ++y)
+    if (y < height * 2 / 5 || y >= height * 3 / 5)
+      for (uint32_t x = 0; x < width; ++x) legend.set(x, y, {20, 20, 23, 255});
+  return legend;
+}
+
 std::string fixed(double value, int digits) {
   std::ostringstream out;
   out.setf(std::ios::fixed);
@@ -105,8 +120,10 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     description += ", " + std::to_string(options.samplesPerPixel) + " spp" +
                    (options.shadows == "on" ? "" : ", no shadows");
   std::vector<SheetCell> renders{{expected, "reference", {description}}};
-  std::vector<SheetCell> heatmaps{
-      {ImageU8(), "", {"heatmaps: FLIP error", "black 0 .. yellow 1", "67 pixels/degree"}}};
+  std::vector<SheetCell> heatmaps{{flipLegend(cell.width, cell.height),
+                                   "FLIP error",
+                                   {"0 (left): no visible difference", "1 (right): the largest",
+                                    "viewed at 67 pixels/degree"}}};
   nlohmann::json report = {{"scene", scene.name},
                            {"size", options.size},
                            {"reference", description},
