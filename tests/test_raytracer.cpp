@@ -117,6 +117,30 @@ TEST(RayTracer, NonUniformScaleIntersectsTheEllipsoidWithItsTrueNormal) {
   EXPECT_NEAR(hit->t, 2.0f, 1e-5f);  // the surface at x = 1 + 2
 }
 
+TEST(RayTracer, RotatedScaledBoxIsIntersectedInObjectSpace) {
+  ShapeDesc box{ShapeKind::Box};
+  box.halfExtents = glm::vec3(0.5f);
+  // Scaled to 2 x 1 x 1 along x, then turned 90 degrees about y: 2 deep in z.
+  RayTracer tracer(oneObject(box, rotationY(glm::radians(90.0f)) * scaling({2, 1, 1})));
+  std::optional<SurfaceHit> hit = tracer.intersect({{0.2f, 0.1f, 5}, {0, 0, -1}}, 0.0f, kInf);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->t, 4.0f, 1e-5f);
+  expectNear(hit->shadingNormal, {0, 0, 1}, 1e-5f);
+  EXPECT_FALSE(tracer.intersect({{0.6f, 0.1f, 5}, {0, 0, -1}}, 0.0f, kInf).has_value());
+}
+
+// Shadow rays pass transparent surfaces dimmed by kt at each crossing.
+TEST(RayTracer, GlassCastsALighterShadowThanAnOpaqueBall) {
+  ShapeDesc sphere{ShapeKind::UvSphere};
+  Scene scene = oneObject(sphere, glm::mat4(1.0f));
+  const Ray throughBall{{0, -5, 0}, {0, 1, 0}};
+  scene.objects[0].material.transparency = 0.5f;
+  EXPECT_FLOAT_EQ(RayTracer(scene).transmittance(throughBall, kInf), 0.25f);  // in and out
+  scene.objects[0].material.transparency = 0.0f;
+  EXPECT_EQ(RayTracer(scene).transmittance(throughBall, kInf), 0.0f);
+  EXPECT_EQ(RayTracer(scene).transmittance(throughBall, 3.5f), 1.0f);  // ends before the ball
+}
+
 TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
   ShapeDesc sphere{ShapeKind::Icosphere};
   sphere.radius = 1.0f;
