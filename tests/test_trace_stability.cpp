@@ -215,6 +215,23 @@ TEST(TraceStability, CameraInsideASphereSeesItsLitOrUnlitInside) {
   EXPECT_EQ(brighter, settings.width * settings.height);
 }
 
+TEST(TraceStability, CollapsedObjectsAreNotThereAndLeaveNoNaN) {
+  Scene scene;
+  scene.background = {0.25f, 0.5f, 0.75f};
+  scene.camera.eye = {0, 0, 5};
+  scene.lights.push_back({LightType::Point, {0, 3, 3}, {}, glm::vec3(1.0f), {1, 0, 0}});
+  scene.objects.push_back(
+      {"flat", scene.addShape(sphereShape(1.0f)), scaling({1.0f, 0.0f, 1.0f}), Material{}});
+  scene.objects.push_back(
+      {"gone", scene.addShape(planeShape(2.0f)), scaling(glm::vec3(0.0f)), Material{}});
+  TraceSettings settings;
+  settings.width = 16, settings.height = 9;
+  const ImageRgba image = RayTracer(scene).render(settings).image;
+  for (uint32_t y = 0; y < settings.height; ++y)
+    for (uint32_t x = 0; x < settings.width; ++x)
+      EXPECT_EQ(glm::vec3(image.at(x, y)), scene.background) << x << "," << y;
+}
+
 TEST(TraceStability, ImageIsBitIdenticalForAnyThreadCount) {
   const Scene scene = builtinScene("whitted");
   RayTracer tracer(scene);

@@ -110,6 +110,7 @@ struct RayTracer::TracedObject {
   glm::mat3 normalToWorld{1.0f};  // inverse transpose of the transform's 3x3
   Bounds worldBounds;
   float transparency = 0.0f;
+  uint32_t sceneObject = 0;  // index into Scene::objects
 
   Ray toLocal(const Ray& ray) const {
     return {glm::vec3(worldToObject * glm::vec4(ray.origin, 1.0f)),
@@ -183,9 +184,15 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     meshBvh[object.mesh] = bvhs_.back().get();
     meshSource[object.mesh] = meshes_.back().get();
   }
-  for (const Object& object : scene.objects) {
+  for (uint32_t index = 0; index < scene.objects.size(); ++index) {
+    const Object& object = scene.objects[index];
     const ShapeDesc& shape = scene.shapes[object.mesh];
+    // A collapsed (zero-scale) or non-finite transform has no inverse: the
+    // object is drawn as nothing, as the rasteriser's degenerate triangles are.
+    const float determinant = glm::determinant(glm::mat3(object.transform));
+    if (!(std::abs(determinant) > 1e-30f) || !std::isfinite(determinant)) continue;
     TracedObject traced;
+    traced.sceneObject = index;
     traced.surface = surfaceOf(shape.kind);
     traced.radius = shape.radius;
     traced.size = shape.size;
@@ -239,7 +246,7 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float
   const TracedObject& object = objects_[size_t(bestObject)];
   SurfaceHit hit;
   hit.t = best.t;
-  hit.object = uint32_t(bestObject);
+  hit.object = object.sceneObject;
   hit.position = ray.at(best.t);
   hit.uv = best.uv;
   glm::vec3 geometric = object.normalToWorld * bestGeometric;
