@@ -2,6 +2,7 @@
 // frame (one camera), each with a heatmap of its difference from a reference
 // and its error numbers; the numbers also go to a JSON file beside the sheet.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -107,12 +108,16 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
 
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;
+  double referenceSeconds = 0.0;
   {
     Renderer renderer(*context);
     RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
     settings.splitModels = models;
     split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
+    const auto start = std::chrono::steady_clock::now();
     expected = encodeSrgb8(reference->second.render(renderer, scene, cell, options));
+    referenceSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   std::string description = reference->second.description;
@@ -128,6 +133,7 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
                            {"size", options.size},
                            {"reference", description},
                            {"modes", nlohmann::json::array()}};
+  std::printf("reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
   std::printf("%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
               "mean FLIP");
   for (size_t i = 0; i < models.size(); ++i) {
