@@ -38,7 +38,6 @@ class Bvh {
   uint32_t countHits(const Ray& ray, float tMin, float tMax) const;
 
   Bounds bounds() const;
-  size_t nodeCount() const { return nodes_.size(); }
   uint32_t depth() const { return depth_; }
   uint32_t largestLeaf() const;
 
