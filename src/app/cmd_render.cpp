@@ -7,6 +7,7 @@
 #include "core/image.h"
 #include "core/scene_loader.h"
 #include "core/stats.h"
+#include "core/texture.h"
 #include "passes/renderer.h"
 
 namespace shadelab {
@@ -20,7 +21,25 @@ struct RenderOptions {
   uint32_t frames = 1;
   float tessellation = 1.0f;
   uint32_t msaa = 1;
+  std::string filter;  // empty: each material's own sampler
+  std::string bump = "on";
+  bool mipTint = false;
 };
+
+TextureOptions parseTextureOptions(const RenderOptions& options) {
+  TextureOptions textures;
+  if (!options.filter.empty()) {
+    textures.filterOverride = parseTextureFilter(options.filter);
+    if (!textures.filterOverride)
+      throw InputError("--filter '" + options.filter +
+                       "': expected one of nearest, bilinear, trilinear, aniso");
+  }
+  if (options.bump != "on" && options.bump != "off")
+    throw InputError("--bump '" + options.bump + "': expected on or off");
+  textures.bump = options.bump == "on";
+  textures.mipTint = options.mipTint;
+  return textures;
+}
 
 void printTimings(const RenderStats& stats) {
   // The first frames include lavapipe's lazy pipeline compile: report them
@@ -39,6 +58,7 @@ void printTimings(const RenderStats& stats) {
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   ShadingModel model = parseShadingModelOption(options.mode, "--mode");
+  TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   if (options.tessellation != 1.0f) scene.retessellate(options.tessellation);
@@ -49,6 +69,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     Renderer renderer(*context);
     RenderSettings settings{size.width, size.height, model, options.frames};
     settings.msaaSamples = options.msaa;
+    settings.textures = textures;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -86,6 +107,16 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
+  command->add_option("--filter", options->filter,
+                      "Texture filter for every texture, overriding the materials' samplers: "
+                      "nearest (base level, no mipmaps), bilinear (nearest mip level), "
+                      "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
+  command->add_option("--bump", options->bump,
+                      "Bump mapping (normal and height maps; Phong and Blinn-Phong only): on, off")
+      ->capture_default_str();
+  command->add_flag("--mip-tint", options->mipTint,
+                    "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
+                    "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
   return [options, &global] { return runRender(*options, global); };
 }
 

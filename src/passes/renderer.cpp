@@ -32,7 +32,9 @@ ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
 }  // namespace
 
 Renderer::Renderer(const Context& context)
-    : context_(context), forward_(context, {kColorFormat, kDepthFormat}) {
+    : context_(context),
+      forward_(context, {kColorFormat, kDepthFormat}),
+      textures_(context, forward_.materialSetLayout()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -259,7 +261,10 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     throw InputError("split screen: more views than pixel columns");
 
   GpuScene gpuScene = uploadScene(context_, scene);
-  forward_.prepare(gpuScene.lights, settings.msaaSamples);
+  textures_.upload(scene, gpuScene, settings.textures);
+  bool textured = std::any_of(gpuScene.draws.begin(), gpuScene.draws.end(),
+                              [](const DrawItem& draw) { return draw.textured; });
+  forward_.prepare(gpuScene.lights, settings.msaaSamples, textured);
   ensureTarget(settings.width, settings.height, settings.msaaSamples);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);

@@ -14,6 +14,7 @@
 #include "core/scene.h"
 #include "core/shading.h"
 #include "passes/forward_pass.h"
+#include "passes/scene_textures.h"
 
 namespace shadelab {
 
@@ -27,6 +28,7 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  TextureOptions textures;  // --filter override, --bump, --mip-tint
 };
 
 struct RenderStats {
@@ -88,6 +90,7 @@ class Renderer {
 
   const Context& context_;
   ForwardPass forward_;
+  SceneTextures textures_;
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;
   Target target_;
