@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/raytracer.h"
 
 namespace shadelab {
 
@@ -29,7 +30,8 @@ ShadingModel parseShadingModelOption(const std::string& text, const std::string&
   throw InputError(option + " '" + text + "': expected one of " + names);
 }
 
-std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option) {
+std::vector<ShadingModel> parseShadingModelList(const std::string& text,
+                                                const std::string& option) {
   std::vector<ShadingModel> models;
   std::stringstream stream(text);
   std::string item;
@@ -43,6 +45,18 @@ std::unique_ptr<Context> openContext(const GlobalOptions& global) {
   options.validation = global.validate;
   options.deviceName = global.device;
   return std::make_unique<Context>(options);
+}
+
+// The tracer lights textured materials with their constant colours only.
+void warnAboutUntracedTextures(const Scene& scene) {
+  const std::vector<std::string> names = untracedTextureObjects(scene);
+  if (names.empty()) return;
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  std::fprintf(stderr,
+               "shadelab: note: the ray tracer does not sample textures yet; traced with their "
+               "constant colours: %s\n",
+               list.c_str());
 }
 
 int finishWithValidation(const Context& context, int exitCode) {

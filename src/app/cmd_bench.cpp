@@ -62,14 +62,15 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     std::fprintf(stderr, "bench: scene %s at %ux%u, %zu settings x %u rounds x %u frames\n",
                  scene.name.c_str(), size.width, size.height, points.size(), options.rounds,
                  options.frames);
-    results = runBenchmark(renderer, scene, points, bench,
-                           [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
+    results = runBenchmark(renderer, scene, points, bench, [](const std::string& line) {
+      std::fprintf(stderr, "  %s\n", line.c_str());
+    });
   }
   fs::path csv = fs::path(options.output) / "results.csv";
   writeTextFile(csv, benchCsv(results, bench, scene.name));
 
-  std::printf("%-12s %6s %5s %10s %12s %9s %9s\n", "mode", "tess", "msaa", "triangles",
-              "median ms", "p95 ms", "x floor");
+  std::printf("%-12s %6s %5s %10s %12s %9s %9s\n", "mode", "tess", "msaa", "triangles", "median ms",
+              "p95 ms", "x floor");
   for (const BenchResult& r : results) {
     const BenchResult* floor = nullptr;
     for (const BenchResult& f : results)
@@ -80,8 +81,8 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
     std::printf("%-12s %6g %5u %10llu %12.3f %9.3f %9s\n",
                 std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
-                r.point.msaaSamples, static_cast<unsigned long long>(r.triangles),
-                r.deviceMedianMs, r.deviceP95Ms, ratio);
+                r.point.msaaSamples, static_cast<unsigned long long>(r.triangles), r.deviceMedianMs,
+                r.deviceP95Ms, ratio);
   }
   std::printf("device medians over %zu steady frames per setting; wrote %s\n",
               results.empty() ? size_t(0) : results.front().frames, csv.string().c_str());
@@ -99,8 +100,9 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("-o,--output", options->output, "Folder for results.csv (created if needed)")
       ->required();
   command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
-  command->add_option("--modes", options->modes,
-                      "Shading models to measure; unlit is the constant-colour floor")
+  command
+      ->add_option("--modes", options->modes,
+                   "Shading models to measure; unlit is the constant-colour floor")
       ->capture_default_str();
   command->add_option("--tess", options->tessellations, "Tessellation factors, comma-separated")
       ->delimiter(',')
@@ -110,7 +112,9 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
-  command->add_option("--frames", options->frames, "Frames per setting and round (first tenth is warm-up)")
+  command
+      ->add_option("--frames", options->frames,
+                   "Frames per setting and round (first tenth is warm-up)")
       ->capture_default_str()
       ->check(CLI::Range(2u, 100000u));
   command->add_option("--rounds", options->rounds, "Interleaved rounds over all settings")

@@ -49,10 +49,11 @@ void printTimings(const RenderStats& stats) {
   std::vector<double> wall(stats.wallMs.begin() + long(warmup), stats.wallMs.end());
   std::printf("first frame: %.2f ms wall, %.2f ms device\n", stats.wallMs.front(),
               stats.deviceMs.front());
-  std::printf("steady (%zu frames after %zu warm-up): device median %.3f ms, p95 %.3f ms; "
-              "wall median %.3f ms, p95 %.3f ms\n",
-              device.size(), warmup, median(device), percentile(device, 95.0), median(wall),
-              percentile(wall, 95.0));
+  std::printf(
+      "steady (%zu frames after %zu warm-up): device median %.3f ms, p95 %.3f ms; "
+      "wall median %.3f ms, p95 %.3f ms\n",
+      device.size(), warmup, median(device), percentile(device, 95.0), median(wall),
+      percentile(wall, 95.0));
 }
 
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
@@ -90,18 +91,21 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                       "Built-in scene name or scene file (default: the built-in default scene)");
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
-  command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")
+  command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  command
+      ->add_option("--mode", options->mode,
+                   "Shading model: flat, gouraud, phong, blinn-phong, "
+                   "unlit (constant colour, the timing floor)")
       ->capture_default_str();
-  command->add_option("--mode", options->mode, "Shading model: flat, gouraud, phong, blinn-phong, "
-                      "unlit (constant colour, the timing floor)")
-      ->capture_default_str();
-  command->add_option("--frames", options->frames,
-                      "Frames to draw (2 in flight); above 1, prints frame-time statistics")
+  command
+      ->add_option("--frames", options->frames,
+                   "Frames to draw (2 in flight); above 1, prints frame-time statistics")
       ->capture_default_str()
       ->check(CLI::Range(1u, 100000u));
-  command->add_option("--tess", options->tessellation,
-                      "Scale the tessellation of procedural shapes and Bezier patches (segments "
-                      "per side x FACTOR; icosphere levels + log2 FACTOR)")
+  command
+      ->add_option("--tess", options->tessellation,
+                   "Scale the tessellation of procedural shapes and Bezier patches (segments "
+                   "per side x FACTOR; icosphere levels + log2 FACTOR)")
       ->capture_default_str()
       ->check(CLI::Range(0.125f, 16.0f));
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
@@ -111,8 +115,9 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                       "Texture filter for every texture, overriding the materials' samplers: "
                       "nearest (base level, no mipmaps), bilinear (nearest mip level), "
                       "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
-  command->add_option("--bump", options->bump,
-                      "Bump mapping (normal and height maps; Phong and Blinn-Phong only): on, off")
+  command
+      ->add_option("--bump", options->bump,
+                   "Bump mapping (normal and height maps; Phong and Blinn-Phong only): on, off")
       ->capture_default_str();
   command->add_flag("--mip-tint", options->mipTint,
                     "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "

@@ -2,7 +2,6 @@
 // Subcommands of the shadelab binary. Each registers its options on the CLI11
 // app; its callback runs the command and returns the process exit code.
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string>
 

@@ -82,6 +82,16 @@ glm::vec3 missColour(const Scene& scene, glm::vec3 /*direction*/) {
   return scene.background;
 }
 
+std::vector<std::string> untracedTextureObjects(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const Object& object : scene.objects) {
+    const Material& m = object.material;
+    if (m.diffuseMap.present() || m.normalMap.present() || m.heightMap.present())
+      names.push_back(object.name);
+  }
+  return names;
+}
+
 CameraRays::CameraRays(const Camera& camera, uint32_t width, uint32_t height)
     : eye_(camera.eye), width_(width), height_(height) {
   const glm::mat4 clip =

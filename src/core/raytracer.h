@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/bvh.h"
@@ -138,5 +139,8 @@ void checkSamplesPerPixel(uint32_t samplesPerPixel);
 // background.
 Material materialAt(const Scene& scene, const SurfaceHit& hit);
 glm::vec3 missColour(const Scene& scene, glm::vec3 direction);
+// The names of objects whose materials use textures (diffuse, normal or
+// height maps), which the tracer does not sample yet: callers warn the user.
+std::vector<std::string> untracedTextureObjects(const Scene& scene);
 
 }  // namespace shadelab
