@@ -1,5 +1,7 @@
 // shadelab trace: the CPU Whitted ray tracer's image of a scene, the ground
 // truth `compare` measures the rasterised modes against. No Vulkan device.
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 
@@ -35,6 +37,11 @@ int runTrace(const TraceOptions& options) {
   settings.maxDepth = options.depth;
   settings.threads = options.threads;
   settings.shadows = options.shadows == "on";
+  // Progress on a terminal only, so logs and pipes get just the summary.
+  if (isatty(STDERR_FILENO))
+    settings.progress = [](float fraction) {
+      std::fprintf(stderr, "\rtracing: %3.0f%%%s", 100.0f * fraction, fraction >= 1.0f ? "\n" : "");
+    };
 
   const auto start = std::chrono::steady_clock::now();
   RayTracer tracer(scene);

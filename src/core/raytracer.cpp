@@ -370,6 +370,22 @@ glm::vec3 RayTracer::traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint
   return shade(ray, *hit, viewer, depth, weight, settings, stats);
 }
 
+// The box-filtered mean of the pixel's n x n stratified samples.
+glm::vec3 RayTracer::tracePixel(const CameraRays& camera, uint32_t x, uint32_t y, uint32_t grid,
+                                const TraceSettings& settings, TraceStats& stats) const {
+  glm::vec3 sum{0.0f};
+  for (uint32_t s = 0; s < grid * grid; ++s) {
+    float dx = 0.5f, dy = 0.5f;
+    if (grid > 1) {
+      dx = (float(s % grid) + jitter(x, y, s, 0)) / float(grid);
+      dy = (float(s / grid) + jitter(x, y, s, 1)) / float(grid);
+    }
+    const Ray ray = camera.through(float(x) + dx, float(y) + dy);
+    sum += traceRay(ray, 1.0f, camera.viewer(), 0, 1.0f, settings, stats);
+  }
+  return sum / float(grid * grid);
+}
+
 void checkSamplesPerPixel(uint32_t samplesPerPixel) {
   const uint32_t grid = uint32_t(std::lround(std::sqrt(double(samplesPerPixel))));
   if (samplesPerPixel == 0 || grid * grid != samplesPerPixel || grid > 16)
@@ -389,30 +405,25 @@ TraceResult RayTracer::render(const TraceSettings& settings) const {
   uint32_t threadCount = settings.threads ? settings.threads : std::thread::hardware_concurrency();
   threadCount = std::clamp<uint32_t>(threadCount, 1, settings.height);
   std::vector<TraceStats> perThread(threadCount);
-  std::atomic<uint32_t> nextRow{0};
+  std::atomic<uint32_t> nextRow{0}, rowsDone{0};
   // Rows are handed out dynamically, but each pixel depends only on its own
   // coordinates: the image is the same for any thread count and order.
-  auto work = [&](TraceStats& stats) {
+  auto work = [&](TraceStats& stats, bool reports) {
+    uint32_t reported = 0;  // tenths
     for (uint32_t y = nextRow++; y < settings.height; y = nextRow++) {
-      for (uint32_t x = 0; x < settings.width; ++x) {
-        glm::vec3 sum{0.0f};
-        for (uint32_t s = 0; s < settings.samplesPerPixel; ++s) {
-          float dx = 0.5f, dy = 0.5f;
-          if (grid > 1) {
-            dx = (float(s % grid) + jitter(x, y, s, 0)) / float(grid);
-            dy = (float(s / grid) + jitter(x, y, s, 1)) / float(grid);
-          }
-          const Ray ray = camera.through(float(x) + dx, float(y) + dy);
-          sum += traceRay(ray, 1.0f, camera.viewer(), 0, 1.0f, settings, stats);
-        }
-        result.image.set(x, y, glm::vec4(sum / float(settings.samplesPerPixel), 1.0f));
-      }
+      for (uint32_t x = 0; x < settings.width; ++x)
+        result.image.set(x, y, glm::vec4(tracePixel(camera, x, y, grid, settings, stats), 1.0f));
+      const uint32_t tenths = 10 * ++rowsDone / settings.height;
+      if (reports && settings.progress && tenths > reported && tenths < 10)
+        settings.progress(float(reported = tenths) / 10.0f);
     }
   };
   std::vector<std::thread> workers;
-  for (uint32_t i = 1; i < threadCount; ++i) workers.emplace_back(work, std::ref(perThread[i]));
-  work(perThread[0]);
+  for (uint32_t i = 1; i < threadCount; ++i)
+    workers.emplace_back(work, std::ref(perThread[i]), false);
+  work(perThread[0], true);
   for (std::thread& worker : workers) worker.join();
+  if (settings.progress) settings.progress(1.0f);
   for (const TraceStats& stats : perThread) result.stats += stats;
   return result;
 }

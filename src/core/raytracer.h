@@ -12,6 +12,7 @@
 // refraction of light, as in Whitted 1980). Surfaces are two-sided: a ray
 // hitting the back of one sees it lit with the normal turned towards the ray.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +46,9 @@ struct TraceSettings {
   float minContribution = 1.0f / 512.0f;
   bool blinn = false;   // Blinn-Phong (N.H)^n instead of Phong (R.V)^n
   bool shadows = true;  // false: every light reaches every surface, as in the rasteriser
+  // Called on the calling thread at each further tenth of the rows done,
+  // and with 1 at the end; empty: no reports.
+  std::function<void(float fraction)> progress;
 };
 
 struct TraceStats {
@@ -123,6 +127,8 @@ class RayTracer {
   glm::vec3 localShading(const SurfaceHit& hit, const Material& material, glm::vec3 viewer,
                          const TraceSettings& settings, TraceStats& stats) const;
   Ray offsetRay(const SurfaceHit& hit, glm::vec3 direction, float epsilon) const;
+  glm::vec3 tracePixel(const CameraRays& camera, uint32_t x, uint32_t y, uint32_t grid,
+                       const TraceSettings& settings, TraceStats& stats) const;
 
   const Scene& scene_;
   std::vector<std::unique_ptr<Mesh>> meshes_;  // the meshes the BVHs were built from
