@@ -297,6 +297,19 @@ TEST(RayTracer, RecursionStopsAtTheDepthOrTheContributionThreshold) {
   EXPECT_EQ(bounces(0.001f, 20), 0u);  // below 1/512 at once
 }
 
+TEST(RayTracer, ProgressRisesInTenthsToOne) {
+  ShapeDesc sphere{ShapeKind::UvSphere};
+  RayTracer tracer(oneObject(sphere, glm::mat4(1.0f)));
+  TraceSettings settings;
+  settings.width = 8, settings.height = 40, settings.threads = 1;
+  std::vector<float> reports;
+  settings.progress = [&](float fraction) { reports.push_back(fraction); };
+  tracer.render(settings);
+  ASSERT_EQ(reports.size(), 10u);  // 0.1 .. 0.9 as rows complete, then 1
+  EXPECT_EQ(reports.back(), 1.0f);
+  for (size_t i = 1; i < reports.size(); ++i) EXPECT_GT(reports[i], reports[i - 1]);
+}
+
 TEST(RayTracer, SampleCountsMustBeSquares) {
   EXPECT_NO_THROW(checkSamplesPerPixel(1));
   EXPECT_NO_THROW(checkSamplesPerPixel(16));
