@@ -30,8 +30,14 @@ ShadingModel parseShadingModelOption(const std::string& text, const std::string&
   throw InputError(option + " '" + text + "': expected one of " + names);
 }
 
-std::vector<ShadingModel> parseShadingModelList(const std::string& text,
-                                                const std::string& option) {
+DepthMode parseDepthModeOption(const std::string& text, const std::string& option) {
+  if (std::optional<DepthMode> mode = parseDepthMode(text)) return *mode;
+  std::string names;
+  for (const std::string& name : depthModeNames()) names += (names.empty() ? "" : ", ") + name;
+  throw InputError(option + " '" + text + "': expected one of " + names);
+}
+
+std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option) {
   std::vector<ShadingModel> models;
   std::stringstream stream(text);
   std::string item;
@@ -47,7 +53,6 @@ std::unique_ptr<Context> openContext(const GlobalOptions& global) {
   return std::make_unique<Context>(options);
 }
 
-// The tracer lights textured materials with their constant colours only.
 void warnAboutUntracedTextures(const Scene& scene) {
   const std::vector<std::string> names = untracedTextureObjects(scene);
   if (names.empty()) return;

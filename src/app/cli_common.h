@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "core/context.h"
+#include "core/depth.h"
 #include "core/scene.h"
 #include "core/shading.h"
 
@@ -22,6 +23,7 @@ Size parseSize(const std::string& text, const std::string& option);
 // "flat,phong" -> models, in order; throws InputError naming a bad entry.
 std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option);
 ShadingModel parseShadingModelOption(const std::string& text, const std::string& option);
+DepthMode parseDepthModeOption(const std::string& text, const std::string& option);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // Prints a note naming the textured objects, which the ray tracer draws

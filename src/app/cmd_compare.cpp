@@ -1,12 +1,11 @@
 // shadelab compare: the shading models side by side in viewports of one
 // frame (one camera), each with a heatmap of its difference from a reference
 // and its error numbers; the numbers also go to a JSON file beside the sheet.
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <functional>
-#include <map>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "app/cli_common.h"
@@ -17,6 +16,7 @@
 #include "core/raytracer.h"
 #include "core/scene_loader.h"
 #include "core/sheet.h"
+#include "passes/reference.h"
 #include "passes/renderer.h"
 
 namespace shadelab {
@@ -31,37 +31,6 @@ struct CompareOptions {
   uint32_t samplesPerPixel = 4;
   std::string shadows = "on";
 };
-
-// A reference is anything that renders the scene at a size.
-struct Reference {
-  std::string description;
-  std::function<ImageRgba(Renderer&, const Scene&, Size, const CompareOptions&)> render;
-};
-
-const std::map<std::string, Reference>& references() {
-  static const std::map<std::string, Reference> table = {
-      {"trace",
-       {"Whitted ray tracer",
-        [](Renderer&, const Scene& scene, Size size, const CompareOptions& options) {
-          TraceSettings settings;
-          settings.width = size.width;
-          settings.height = size.height;
-          settings.samplesPerPixel = options.samplesPerPixel;
-          settings.shadows = options.shadows == "on";
-          return RayTracer(scene).render(settings).image;
-        }}},
-      {"raster",
-       {"Phong, 4x tessellation, 4x MSAA",
-        [](Renderer& renderer, const Scene& scene, Size size, const CompareOptions&) {
-          Scene fine = scene;
-          fine.retessellate(4.0f);
-          RenderSettings settings{size.width, size.height, ShadingModel::Phong};
-          settings.msaaSamples = 4;
-          return renderer.renderToImage(fine, settings).image;
-        }}},
-  };
-  return table;
-}
 
 ImageU8 crop(const ImageU8& image, uint32_t x0, uint32_t width) {
   ImageU8 result(width, image.height);
@@ -95,10 +64,10 @@ std::string fixed(double value, int digits) {
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Size cell = parseSize(options.size, "--size");
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
-  auto reference = references().find(options.reference);
-  if (reference == references().end())
-    throw InputError("--reference '" + options.reference + "': expected trace or raster");
   checkSamplesPerPixel(options.samplesPerPixel);
+  Reference reference = findReference(options.reference, "--reference");
+  if (reference.name == "trace")
+    reference = traceReference(options.samplesPerPixel, options.shadows == "on");
   std::filesystem::path sheetPath(options.output);
   if (sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
@@ -116,15 +85,12 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     settings.splitModels = models;
     split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
     const auto start = std::chrono::steady_clock::now();
-    expected = encodeSrgb8(reference->second.render(renderer, scene, cell, options));
+    expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
     referenceSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  std::string description = reference->second.description;
-  if (options.reference == "trace")
-    description += ", " + std::to_string(options.samplesPerPixel) + " spp" +
-                   (options.shadows == "on" ? "" : ", no shadows");
+  const std::string& description = reference.description;
   std::vector<SheetCell> renders{{expected, "reference", {description}}};
   std::vector<SheetCell> heatmaps{{flipLegend(cell.width, cell.height),
                                    "FLIP error",

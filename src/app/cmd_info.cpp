@@ -2,6 +2,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "core/depth.h"
 #include "core/scene.h"
 #include "core/shading.h"
 
@@ -10,16 +11,11 @@ namespace {
 
 const char* deviceTypeName(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
-      return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
-      return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
-      return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU:
-      return "CPU (software)";
-    default:
-      return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU (software)";
+    default: return "other";
   }
 }
 
@@ -42,11 +38,19 @@ int runInfo(const GlobalOptions& global) {
   std::printf("vulkan:          %s\n", versionString(device.apiVersion).c_str());
   std::printf("validation:      %s\n", context->validationEnabled() ? "on" : "off");
   std::printf("features used:   dynamic rendering, synchronization2, geometry shader (flat)\n");
-  std::printf(
-      "optional:        sampler anisotropy %s (max %.0f), wireframe %s, "
-      "pipeline statistics %s\n",
-      features.samplerAnisotropy ? "yes" : "no", properties.limits.maxSamplerAnisotropy,
-      features.fillModeNonSolid ? "yes" : "no", features.pipelineStatisticsQuery ? "yes" : "no");
+  std::printf("optional:        sampler anisotropy %s (max %.0f), wireframe %s, "
+              "pipeline statistics %s\n",
+              features.samplerAnisotropy ? "yes" : "no", properties.limits.maxSamplerAnisotropy,
+              features.fillModeNonSolid ? "yes" : "no",
+              features.pipelineStatisticsQuery ? "yes" : "no");
+  std::string depthModes;
+  for (DepthMode mode : kDepthModes) {
+    VkFormatProperties format;
+    vkGetPhysicalDeviceFormatProperties(context->physicalDevice(), depthFormat(mode), &format);
+    bool usable = format.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    depthModes += " " + std::string(depthModeName(mode)) + (usable ? "" : " (unsupported)");
+  }
+  std::printf("depth modes:    %s\n", depthModes.c_str());
   std::printf("timestamps:      %.3f ns per tick\n", properties.limits.timestampPeriod);
   std::printf("max image size:  %u\n", properties.limits.maxImageDimension2D);
   std::string scenes, models;
