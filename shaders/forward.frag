@@ -24,5 +24,5 @@ void main() {
     color = illuminate(inPosition, inNormal, drawMaterial(),
                        shadingModel == SHADING_BLINN_PHONG);
   }
-  outColor = vec4(color, 1.0);
+  outColor = vec4(color, draw.kd.w);  // kd.w: opacity, 1 - transparency
 }

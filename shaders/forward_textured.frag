@@ -34,5 +34,5 @@ void main() {
     color = illuminate(inPosition, bumpedNormal(inNormal, inTangent, st), material,
                        shadingModel == SHADING_BLINN_PHONG);
   }
-  outColor = vec4(color, 1.0);
+  outColor = vec4(color, draw.kd.w);  // kd.w: opacity, 1 - transparency
 }

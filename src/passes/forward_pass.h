@@ -1,12 +1,14 @@
 #pragma once
-// Forward shading pass: draws every object of a GpuScene with the Phong
-// illumination equation under one of the shading models.
+// Forward shading pass: draws the visible objects of a GpuScene with the
+// Phong illumination equation under one of the shading models.
 // Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index
 // buffers; textured draws also set 1 (their material's textures).
 // Textured draws use their own variants (forward_textured.*): they read the
-// uv and tangent attributes, which the others do not declare.
+// uv and tangent attributes, which the others do not declare. Transparent
+// draws use blended variants that do not write depth.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
+#include <span>
 #include <tuple>
 
 #include "core/context.h"
@@ -33,15 +35,19 @@ class ForwardPass {
   VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_.get(); }
   // Builds the pipelines of every shading model for a scene's light layout
   // (specialization constants) and a target layout, before any frame records
-  // with them; `textured` adds the textured variants.
-  void prepare(LightLayout lights, TargetLayout target, bool textured);
-  // Records inside an active dynamic-rendering scope; sets its own viewport.
+  // with them; `textured` adds the textured variants, `blended` the ones
+  // transparent draws use.
+  void prepare(LightLayout lights, TargetLayout target, bool textured, bool blended);
+  // Records `draws` (visibleDraws: opaque first, then transparent ones, which
+  // blend over what is drawn) inside an active dynamic-rendering scope; sets
+  // its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
-              VkDescriptorSet frameSet, const GpuScene& scene, const VkViewport& viewport) const;
+              VkDescriptorSet frameSet, const GpuScene& scene, std::span<const DrawItem> draws,
+              const VkViewport& viewport) const;
 
  private:
-  // model, lights, target (samples, depth), textured
-  using VariantKey = std::tuple<ShadingModel, LightLayout, TargetLayout, bool>;
+  // model, lights, target (samples, depth), textured, blended
+  using VariantKey = std::tuple<ShadingModel, LightLayout, TargetLayout, bool, bool>;
   Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;

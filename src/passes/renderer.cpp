@@ -199,7 +199,8 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
 }
 
 void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                           const RenderSettings& settings, const Buffer* readback) {
+                           const RenderSettings& settings, const Buffer* readback,
+                           RenderStats& stats) {
   VkDevice device = context_.device();
   uint32_t width = settings.width, height = settings.height;
   glm::mat4 view = source.camera.viewMatrix();
@@ -209,6 +210,11 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
+  std::vector<DrawItem> draws = visibleDraws(scene, view, projection, settings.frustumCulling,
+                                              stats.culledDraws);
+  stats.drawCalls = uint32_t(draws.size());
+  stats.triangles = 0;
+  for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
 
   VK_CHECK(vkResetCommandPool(device, frame.pool, 0));
@@ -228,7 +234,7 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
     float left = std::floor(columnWidth * float(i));
     float right = std::floor(columnWidth * float(i + 1));
     VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
-    forward_.record(cmd, models[i], target_.layout, frame.set, scene, viewport);
+    forward_.record(cmd, models[i], target_.layout, frame.set, scene, draws, viewport);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
@@ -277,14 +283,12 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   bool textured = std::any_of(gpuScene.draws.begin(), gpuScene.draws.end(),
                               [](const DrawItem& draw) { return draw.textured; });
   TargetLayout layout{settings.msaaSamples, settings.depth};
-  forward_.prepare(gpuScene.lights, layout, textured);
+  forward_.prepare(gpuScene.lights, layout, textured, gpuScene.anyTransparent);
   ensureTarget(settings.width, settings.height, layout);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 
   RenderResult result;
-  result.stats.triangles = gpuScene.triangles;
-  result.stats.drawCalls = uint32_t(gpuScene.draws.size());
   result.stats.deviceMemoryBytes = deviceMemoryInUse();
   double lastCompletion = nowMs();
   for (uint32_t i = 0; i < settings.frames; ++i) {
@@ -292,7 +296,7 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     retire(frame, result.stats, lastCompletion);
     ensureObjectCapacity(frame, uint32_t(scene.objects.size()));
     bool last = i + 1 == settings.frames;
-    recordFrame(frame, gpuScene, scene, settings, last ? &readback : nullptr);
+    recordFrame(frame, gpuScene, scene, settings, last ? &readback : nullptr, result.stats);
   }
   // Retire in submission order so the per-frame timings stay in order.
   for (uint32_t i = 0; i < kFramesInFlight; ++i)

@@ -30,13 +30,15 @@ struct RenderSettings {
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
   TextureOptions textures;  // --filter override, --bump, --mip-tint
   DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
+  bool frustumCulling = true;  // off only to show that culling changes no pixel
 };
 
 struct RenderStats {
   std::vector<double> deviceMs;  // per frame, from GPU timestamps around the frame's commands
   std::vector<double> wallMs;    // per frame, interval between successive frame completions
-  uint64_t triangles = 0;        // submitted per frame
-  uint32_t drawCalls = 0;
+  uint64_t triangles = 0;        // submitted per frame (after culling)
+  uint32_t drawCalls = 0;        // submitted per frame (after culling)
+  uint32_t culledDraws = 0;      // objects outside the view frustum, not drawn
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;
@@ -91,7 +93,7 @@ class Renderer {
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
   void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                   const RenderSettings& settings, const Buffer* readback);
+                   const RenderSettings& settings, const Buffer* readback, RenderStats& stats);
 
   const Context& context_;
   ForwardPass forward_;
