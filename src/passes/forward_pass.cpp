@@ -18,9 +18,11 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
       {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+      {BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT},
   };
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.bindingCount = 2;
+  setInfo.bindingCount = uint32_t(std::size(bindings));
   setInfo.pBindings = bindings;
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
@@ -43,23 +45,24 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   fragment_ = loadShader(device, "forward.frag");
 }
 
-void ForwardPass::prepare(LightLayout lights, uint32_t samples) {
+void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool environment) {
   for (int model = 0; model < kShadingModelCount; ++model) {
-    VariantKey key{ShadingModel(model), lights, samples};
+    VariantKey key{ShadingModel(model), lights, samples, environment};
     if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
   }
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples] = key;
+  const auto& [model, lights, samples, environment] = key;
   const AttachmentFormats& formats = formats_;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
     int32_t directionalLights;
     VkBool32 attenuated;
+    VkBool32 environment;
   } constants{int32_t(model), int32_t(lights.point), int32_t(lights.directional),
-              lights.attenuated ? VK_TRUE : VK_FALSE};
+              lights.attenuated ? VK_TRUE : VK_FALSE, environment ? VK_TRUE : VK_FALSE};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -67,8 +70,10 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
        4},
       {/* constantID= */ SPEC_ATTENUATED_POINT_LIGHTS, offsetof(decltype(constants), attenuated),
        4},
+      {/* constantID= */ SPEC_ENVIRONMENT, offsetof(decltype(constants), environment), 4},
   };
-  VkSpecializationInfo specialization{4, entries, sizeof(constants), &constants};
+  VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
+                                      &constants};
 
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   auto addStage = [&](VkShaderStageFlagBits stage, VkShaderModule module) {
@@ -159,12 +164,12 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
                          VkDescriptorSet frameSet, const GpuScene& scene,
-                         const VkViewport& viewport) const {
+                         const VkViewport& viewport, bool environment) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({model, scene.lights, samples});
+  auto pipeline = pipelines_.find({model, scene.lights, samples, environment});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,

@@ -1,7 +1,8 @@
 #pragma once
 // Forward shading pass: draws every object of a GpuScene with the Phong
 // illumination equation under one of the shading models.
-// Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index buffers.
+// Reads: set 0 = FrameData (uniform) + ObjectData[] (storage) + the environment
+// cube (environment term: kr, kt and ior per draw), vertex/index buffers.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
 #include <tuple>
@@ -24,15 +25,16 @@ class ForwardPass {
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
   // Builds the pipelines of every shading model for a scene's light layout
-  // (specialization constants) and a sample count, before any frame records
-  // with them.
-  void prepare(LightLayout lights, uint32_t samples);
+  // (specialization constants), a sample count and whether the environment
+  // term is on, before any frame records with them.
+  void prepare(LightLayout lights, uint32_t samples, bool environment = false);
   // Records inside an active dynamic-rendering scope; sets its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples, VkDescriptorSet frameSet,
-              const GpuScene& scene, const VkViewport& viewport) const;
+              const GpuScene& scene, const VkViewport& viewport, bool environment = false) const;
 
  private:
-  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t>;  // model, lights, samples
+  // model, lights, samples, environment term
+  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t, bool>;
   Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;

@@ -32,12 +32,17 @@ ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
 }  // namespace
 
 Renderer::Renderer(const Context& context)
-    : context_(context), forward_(context, {kColorFormat, kDepthFormat}) {
+    : context_(context),
+      forward_(context, {kColorFormat, kDepthFormat}),
+      skybox_(context, {kColorFormat, kDepthFormat}, forward_.descriptorSetLayout()),
+      environmentBuilder_(context),
+      placeholderEnvironment_(environmentBuilder_.placeholder()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
-                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight}};
+                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight},
+                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = kFramesInFlight;
-  poolInfo.poolSizeCount = 2;
+  poolInfo.poolSizeCount = uint32_t(std::size(sizes));
   poolInfo.pPoolSizes = sizes;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorPool(context.device(), &poolInfo, nullptr, &pool));
@@ -81,8 +86,30 @@ void Renderer::createFrame(Frame& frame) {
   setInfo.descriptorSetCount = 1;
   setInfo.pSetLayouts = &layout;
   VK_CHECK(vkAllocateDescriptorSets(device, &setInfo, &frame.set));
-  // Both bindings are written now: lavapipe crashes on never-written descriptors.
+  // Every binding is written now: lavapipe crashes on never-written descriptors.
   ensureObjectCapacity(frame, 64);
+  writeEnvironmentDescriptor(frame);
+}
+
+void Renderer::writeEnvironmentDescriptor(const Frame& frame) const {
+  const EnvironmentCube& cube = sceneEnvironment_ ? sceneEnvironment_ : placeholderEnvironment_;
+  VkDescriptorImageInfo image{cube.sampler.get(), cube.image.view(),
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = frame.set;
+  write.dstBinding = BINDING_ENVIRONMENT;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &image;
+  vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+}
+
+void Renderer::bindEnvironment(const Scene& scene, bool enabled) {
+  EnvironmentCube previous = std::move(sceneEnvironment_);
+  if (enabled && scene.environment.present())
+    sceneEnvironment_ = environmentBuilder_.build(scene.environment);
+  // Re-point the descriptors before the previous cube's view is destroyed.
+  for (const Frame& frame : frames_) writeEnvironmentDescriptor(frame);
 }
 
 void Renderer::ensureObjectCapacity(Frame& frame, uint32_t count) {
@@ -176,7 +203,7 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {1.0f, 0};
+  depth.clearValue.depthStencil = {kClearDepth, 0};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, {width, height}};
   rendering.layerCount = 1;
@@ -197,6 +224,7 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
+  bool environment = bool(sceneEnvironment_);
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
 
   VK_CHECK(vkResetCommandPool(device, frame.pool, 0));
@@ -216,7 +244,9 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
     float left = std::floor(columnWidth * float(i));
     float right = std::floor(columnWidth * float(i + 1));
     VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
-    forward_.record(cmd, models[i], target_.samples, frame.set, scene, viewport);
+    forward_.record(cmd, models[i], target_.samples, frame.set, scene, viewport, environment);
+    if (environment)
+      skybox_.record(cmd, target_.samples, frame.set, view, projection, kClearDepth, viewport);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
@@ -259,7 +289,10 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     throw InputError("split screen: more views than pixel columns");
 
   GpuScene gpuScene = uploadScene(context_, scene);
-  forward_.prepare(gpuScene.lights, settings.msaaSamples);
+  bindEnvironment(scene, settings.environment);
+  bool environment = bool(sceneEnvironment_);
+  forward_.prepare(gpuScene.lights, settings.msaaSamples, environment);
+  if (environment) skybox_.prepare(settings.msaaSamples);
   ensureTarget(settings.width, settings.height, settings.msaaSamples);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);

@@ -13,7 +13,9 @@
 #include "core/resources.h"
 #include "core/scene.h"
 #include "core/shading.h"
+#include "passes/environment_builder.h"
 #include "passes/forward_pass.h"
+#include "passes/skybox_pass.h"
 
 namespace shadelab {
 
@@ -27,6 +29,9 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  // --env: with a scene environment, the environment term and the skybox;
+  // off (or a scene without one) renders with the background colour only.
+  bool environment = true;
 };
 
 struct RenderStats {
@@ -46,6 +51,7 @@ class Renderer {
   static constexpr uint32_t kFramesInFlight = 2;
   static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // linear, HDR
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+  static constexpr float kClearDepth = 1.0f;  // the far plane; the skybox fills what stays there
 
   explicit Renderer(const Context& context);
   ~Renderer();
@@ -85,9 +91,17 @@ class Renderer {
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
   void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
                    const RenderSettings& settings, const Buffer* readback);
+  // Builds the scene's cube (or picks the placeholder) and points every
+  // frame's descriptor at it; call with no frame in flight.
+  void bindEnvironment(const Scene& scene, bool enabled);
+  void writeEnvironmentDescriptor(const Frame& frame) const;
 
   const Context& context_;
   ForwardPass forward_;
+  SkyboxPass skybox_;
+  EnvironmentBuilder environmentBuilder_;
+  EnvironmentCube placeholderEnvironment_;
+  EnvironmentCube sceneEnvironment_;  // empty when the scene has none or it is off
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;
   Target target_;
