@@ -20,6 +20,7 @@ struct RenderOptions {
   uint32_t frames = 1;
   float tessellation = 1.0f;
   uint32_t msaa = 1;
+  std::string environment = "on";
 };
 
 void printTimings(const RenderStats& stats) {
@@ -49,6 +50,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     Renderer renderer(*context);
     RenderSettings settings{size.width, size.height, model, options.frames};
     settings.msaaSamples = options.msaa;
+    settings.environment = options.environment == "on";
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -86,6 +88,11 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
+  command->add_option("--env", options->environment,
+                      "Environment mapping (reflections, refraction, skybox) when the scene has "
+                      "an environment: on or off")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   return [options, &global] { return runRender(*options, global); };
 }
 

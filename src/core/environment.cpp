@@ -166,8 +166,8 @@ ImageRgba readLinearImage(const std::filesystem::path& path) {
     throw InputError("cannot read image '" + path.string() + "': " + source.geterror());
   const OIIO::ImageSpec& spec = source.spec();
   // Integer files hold sRGB-encoded display values; float files hold radiance.
-  OIIO::TypeDesc stored = source.file_format_name() == "hdr" ? OIIO::TypeDesc::FLOAT : spec.format;
-  bool encoded = !stored.is_floating_point();
+  // (spec() describes the float buffer it was read into; nativespec() the file.)
+  bool encoded = !source.nativespec().format.is_floating_point();
   int channels = spec.nchannels;
   std::vector<float> raw(size_t(spec.width) * spec.height * channels);
   source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
