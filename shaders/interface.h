@@ -85,7 +85,7 @@ struct DrawConstants {
   vec4 kd;      // rgb
   vec4 ks;      // rgb, w = shininess n
   ivec4 object; // x = index into ObjectData[]
-  vec4 optics;  // x = reflectivity kr, y = transparency kt, z = index of refraction (environment term)
+  vec4 optics;   // environment term: x = reflectivity kr, y = transparency kt, z = ior
 };
 
 // The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/environment.cpp).
@@ -94,7 +94,7 @@ struct SkyParameters {
   vec4 horizon;       // rgb, at the horizon (both halves)
   vec4 ground;        // rgb, straight down
   vec4 sunDirection;  // xyz = unit direction towards the sun, w = cos(angular radius)
-  vec4 sunRadiance;   // rgb = radiance of the disc, w = cos(0.8 * angular radius): the soft edge starts
+  vec4 sunRadiance;   // rgb = the disc's radiance, w = cos(0.5 * angular radius): soft edge starts
   ivec4 face;         // x = cube face size in texels
 };
 
@@ -107,7 +107,7 @@ struct SkyboxConstants {
 // Equirectangular panorama -> cube conversion.
 struct PanoramaParameters {
   ivec4 face;   // x = cube face size in texels
-  vec4 sampling;  // x = panorama mip level to sample, y = rotation about +y (radians), z = intensity
+  vec4 sampling;  // x = panorama mip level, y = rotation about +y (radians), z = intensity
 };
 
 #ifdef __cplusplus

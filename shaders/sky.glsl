@@ -1,6 +1,6 @@
 // The procedural sky (mirrored by skyRadiance in src/core/environment.cpp):
 // a gradient, sqrt-shaped in the elevation y, from the horizon to the zenith
-// above and to the ground below, plus the sun's disc, whose outer 20% of
+// above and to the ground below, plus the sun's disc, whose outer half of
 // radius fades out (smoothstep in the cosine).
 #ifndef SKY_GLSL
 #define SKY_GLSL

@@ -49,7 +49,7 @@ uint32_t cubeResolution(const Environment& environment) {
       return std::clamp(std::bit_ceil(quarter), 64u, 2048u);
     }
     case EnvironmentKind::Sky:
-      return 256;
+      return 512;
     case EnvironmentKind::None:
       return 1;
   }
@@ -119,7 +119,7 @@ gpu::SkyParameters skyParameters(const SkyDesc& sky, float intensity, uint32_t f
   parameters.sunDirection = glm::vec4(toSun, std::cos(radius));
   // No sun: radiance 0 (the disc test below still needs an ordered edge).
   glm::vec3 sun = sky.sunSizeDegrees > 0.0f ? intensity * sky.sunIntensity : glm::vec3(0.0f);
-  parameters.sunRadiance = glm::vec4(sun, std::cos(0.8f * radius));
+  parameters.sunRadiance = glm::vec4(sun, std::cos(0.5f * radius));
   parameters.face = glm::ivec4(int(faceSize), 0, 0, 0);
   return parameters;
 }

@@ -27,7 +27,7 @@ namespace shadelab {
 enum class EnvironmentKind { None, Sky, Panorama, CubeFaces };
 
 // Sky = a gradient zenith -> horizon -> ground, sqrt-shaped in the elevation,
-// plus a sun disc with a soft edge (its outer 20%).
+// plus a sun disc with a soft edge (its outer half).
 struct SkyDesc {
   glm::vec3 zenith{0.12f, 0.3f, 0.75f};
   glm::vec3 horizon{0.75f, 0.82f, 0.95f};
@@ -54,7 +54,8 @@ struct Environment {
 
 // The face size the cube map gets: `resolution` if set; else the faces' own
 // size, a panorama's width / 4 rounded up to a power of two (one cube texel
-// per panorama texel at a face centre) in 64..2048, or 256 for the sky.
+// per panorama texel at a face centre) in 64..2048, or 512 for the sky
+// (its sun's edge is HDR: sharper than a bilinear 256 face shows smoothly).
 uint32_t cubeResolution(const Environment& environment);
 uint32_t cubeMipLevels(uint32_t faceSize);  // down to 1x1
 

@@ -46,7 +46,7 @@
 //              "nz.png"]}: six square faces of one size in Vulkan's cube layout.
 //             Files are relative to the scene file's folder. Every type but "none" may have
 //             "intensity" (>= 0, default 1, multiplies it); sky and equirect may have
-//             "resolution", the cube face size (a power of two, 16..2048; default 256 for the
+//             "resolution", the cube face size (a power of two, 16..2048; default 512 for the
 //             sky, a panorama's width / 4 rounded up to a power of two within 64..2048).
 // lights      at most 8 (MAX_LIGHTS, the renderer's limit). "type" is "point" (default) or
 //             "directional". A point light needs "position" [x, y, z] and may have
