@@ -39,6 +39,12 @@ glm::vec3 rotateY(glm::vec3 d, float radians) {
 
 }  // namespace
 
+bool SkyDesc::operator==(const SkyDesc& other) const {
+  return zenith == other.zenith && horizon == other.horizon && ground == other.ground &&
+         sunDirection == other.sunDirection && sunSizeDegrees == other.sunSizeDegrees &&
+         sunIntensity == other.sunIntensity;
+}
+
 uint32_t cubeResolution(const Environment& environment) {
   if (environment.resolution > 0) return environment.resolution;
   switch (environment.kind) {

@@ -32,10 +32,11 @@ struct SkyDesc {
   glm::vec3 zenith{0.12f, 0.3f, 0.75f};
   glm::vec3 horizon{0.75f, 0.82f, 0.95f};
   glm::vec3 ground{0.22f, 0.2f, 0.18f};
-  glm::vec3 sunDirection{-0.4f, -0.6f,
-                         -0.7f};  // the way sunlight travels, like a directional light
+  // The way sunlight travels, like a directional light's direction.
+  glm::vec3 sunDirection{-0.4f, -0.6f, -0.7f};
   float sunSizeDegrees = 3.0f;    // angular diameter; 0: no sun
   glm::vec3 sunIntensity{20.0f};  // radiance of the disc (HDR)
+  bool operator==(const SkyDesc& other) const;
 };
 
 struct Environment {
@@ -50,6 +51,8 @@ struct Environment {
   std::string source;            // the file(s) or generator it came from, for messages
 
   bool present() const { return kind != EnvironmentKind::None; }
+  // Images compare by identity: copies of a scene share them.
+  bool operator==(const Environment&) const = default;
 };
 
 // The face size the cube map gets: `resolution` if set; else the faces' own

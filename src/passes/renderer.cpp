@@ -105,9 +105,11 @@ void Renderer::writeEnvironmentDescriptor(const Frame& frame) const {
 }
 
 void Renderer::bindEnvironment(const Scene& scene, bool enabled) {
+  bool wanted = enabled && scene.environment.present();
+  if (wanted && sceneEnvironment_ && sceneEnvironmentSource_ == scene.environment) return;
   EnvironmentCube previous = std::move(sceneEnvironment_);
-  if (enabled && scene.environment.present())
-    sceneEnvironment_ = environmentBuilder_.build(scene.environment);
+  sceneEnvironmentSource_ = wanted ? scene.environment : Environment{};
+  if (wanted) sceneEnvironment_ = environmentBuilder_.build(scene.environment);
   // Re-point the descriptors before the previous cube's view is destroyed.
   for (const Frame& frame : frames_) writeEnvironmentDescriptor(frame);
 }

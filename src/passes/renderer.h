@@ -91,8 +91,9 @@ class Renderer {
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
   void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
                    const RenderSettings& settings, const Buffer* readback);
-  // Builds the scene's cube (or picks the placeholder) and points every
-  // frame's descriptor at it; call with no frame in flight.
+  // Builds the scene's cube (kept while the scene's environment stays the
+  // same) or picks the placeholder, and points every frame's descriptor at
+  // it; call with no frame in flight.
   void bindEnvironment(const Scene& scene, bool enabled);
   void writeEnvironmentDescriptor(const Frame& frame) const;
 
@@ -102,6 +103,7 @@ class Renderer {
   EnvironmentBuilder environmentBuilder_;
   EnvironmentCube placeholderEnvironment_;
   EnvironmentCube sceneEnvironment_;  // empty when the scene has none or it is off
+  Environment sceneEnvironmentSource_;  // what sceneEnvironment_ was built from
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;
   Target target_;
