@@ -77,6 +77,13 @@ struct ObjectData {
   mat4 normalMatrix;  // inverse transpose of modelView's upper 3x3, padded to a mat4
 };
 
+// DrawConstants::object.y: which of the material's textures the textured
+// pipelines apply (set 1 always holds all three, dummies where absent).
+#define TEXTURE_DIFFUSE 1
+#define TEXTURE_NORMAL 2
+#define TEXTURE_HEIGHT 4
+#define TEXTURE_MIP_TINT 8  // debug: replace the diffuse texel by its mip level's colour
+
 // Per draw, as push constants: the material and the object's index. Fragment
 // shaders read the material from here, never from the storage buffer (on
 // llvmpipe that load cost 3 ms per 1280x720 frame, measured).
@@ -84,7 +91,8 @@ struct DrawConstants {
   vec4 ka;      // rgb
   vec4 kd;      // rgb
   vec4 ks;      // rgb, w = shininess n
-  ivec4 object; // x = index into ObjectData[]
+  ivec4 object; // x = index into ObjectData[], y = TEXTURE_* flags
+  vec4 texturing;  // xy = uv scale (repeats), z = bump scale
   vec4 optics;   // environment term: x = reflectivity kr, y = transparency kt, z = ior
 };
 

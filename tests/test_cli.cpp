@@ -264,6 +264,43 @@ TEST_F(Cli, BenchWritesOneCsvRowPerSetting) {
   EXPECT_NE(r.output.find("x floor"), std::string::npos) << r.output;
 }
 
+TEST_F(Cli, MissingTextureNamesTheFileAndTheMaterialAndWritesNothing) {
+  std::ofstream(out("textured.json"))
+      << R"({"materials": {"brick": {"diffuse_map": "maps/missing.png"}},
+             "objects": [{"shape": "plane", "material": "brick"}]})";
+  CommandResult r = run("render " + out("textured.json") + " -o " + out("a.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("maps/missing.png"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("material 'brick'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("materials.brick.diffuse_map"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 1u);  // only the scene file itself
+}
+
+TEST_F(Cli, UnreadableTextureIsAnInputError) {
+  std::ofstream(out("noise.png")) << "not a png";
+  std::ofstream(out("textured.json"))
+      << R"({"objects": [{"name": "ball", "shape": "sphere",
+                          "material": {"normal_map": "noise.png"}}]})";
+  CommandResult r = run("render " + out("textured.json") + " -o " + out("a.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("noise.png"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("the material of object 'ball'"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 2u);
+}
+
+TEST_F(Cli, TextureOptionsRenderAndBadValuesAreInputErrors) {
+  CommandResult r = run("render mip-plane -o " + out("a.png") +
+                        " --size 64x36 --filter nearest --bump off --mip-tint");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(pngSize(out("a.png")), std::make_pair(64u, 36u));
+  for (const char* bad : {"--filter cubic", "--bump maybe"}) {
+    CommandResult e = run("render bump -o " + out("b.png") + " " + bad);
+    EXPECT_EQ(e.exitCode, 2) << bad << ": " << e.output;
+    EXPECT_NE(e.output.find(std::string(bad).substr(0, 6)), std::string::npos) << e.output;
+  }
+  EXPECT_EQ(filesLeft(), 1u);
+}
+
 TEST_F(Cli, BenchBadSampleCountIsAUsageError) {
   CommandResult r = run("bench -o " + out("bench") + " --msaa 1,3");
   EXPECT_EQ(r.exitCode, 2) << r.output;

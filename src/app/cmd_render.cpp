@@ -7,6 +7,7 @@
 #include "core/image.h"
 #include "core/scene_loader.h"
 #include "core/stats.h"
+#include "core/texture.h"
 #include "passes/renderer.h"
 
 namespace shadelab {
@@ -21,7 +22,25 @@ struct RenderOptions {
   float tessellation = 1.0f;
   uint32_t msaa = 1;
   std::string environment = "on";
+  std::string filter;  // empty: each material's own sampler
+  std::string bump = "on";
+  bool mipTint = false;
 };
+
+TextureOptions parseTextureOptions(const RenderOptions& options) {
+  TextureOptions textures;
+  if (!options.filter.empty()) {
+    textures.filterOverride = parseTextureFilter(options.filter);
+    if (!textures.filterOverride)
+      throw InputError("--filter '" + options.filter +
+                       "': expected one of nearest, bilinear, trilinear, aniso");
+  }
+  if (options.bump != "on" && options.bump != "off")
+    throw InputError("--bump '" + options.bump + "': expected on or off");
+  textures.bump = options.bump == "on";
+  textures.mipTint = options.mipTint;
+  return textures;
+}
 
 void printTimings(const RenderStats& stats) {
   // The first frames include lavapipe's lazy pipeline compile: report them
@@ -40,6 +59,7 @@ void printTimings(const RenderStats& stats) {
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   ShadingModel model = parseShadingModelOption(options.mode, "--mode");
+  TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   if (options.tessellation != 1.0f) scene.retessellate(options.tessellation);
@@ -51,6 +71,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     RenderSettings settings{size.width, size.height, model, options.frames};
     settings.msaaSamples = options.msaa;
     settings.environment = options.environment == "on";
+    settings.textures = textures;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -93,6 +114,16 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                       "an environment: on or off")
       ->capture_default_str()
       ->check(CLI::IsMember({"on", "off"}));
+  command->add_option("--filter", options->filter,
+                      "Texture filter for every texture, overriding the materials' samplers: "
+                      "nearest (base level, no mipmaps), bilinear (nearest mip level), "
+                      "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
+  command->add_option("--bump", options->bump,
+                      "Bump mapping (normal and height maps; Phong and Blinn-Phong only): on, off")
+      ->capture_default_str();
+  command->add_flag("--mip-tint", options->mipTint,
+                    "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
+                    "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
   return [options, &global] { return runRender(*options, global); };
 }
 

@@ -2,6 +2,7 @@
 #include <map>
 
 #include "core/errors.h"
+#include "core/procedural_textures.h"
 #include "core/scene.h"
 #include "core/transform.h"
 
@@ -209,12 +210,81 @@ Scene environmentScene() {
   return scene;
 }
 
+int32_t addTexture(Scene& scene, Texture texture) {
+  scene.textures.push_back(std::move(texture));
+  return int32_t(scene.textures.size() - 1);
+}
+
+// A checkerboard plane receding to the horizon: from large checks at the
+// bottom of the frame to many checks per pixel near the top, where a texture
+// without mipmaps aliases into moire. The mipmapping tests' scene.
+Scene mipPlaneScene() {
+  Scene scene;
+  scene.name = "mip-plane";
+  scene.camera.eye = {0.0f, 1.0f, 0.0f};
+  scene.camera.at = {0.0f, -0.2f, -10.0f};
+  scene.camera.fovyDegrees = 50.0f;
+  scene.camera.far = 400.0f;
+  scene.ambient = glm::vec3(0.35f);
+  scene.background = {0.45f, 0.55f, 0.7f};
+  scene.lights.push_back(directionalLight({0.3f, -1.0f, -0.4f}, glm::vec3(0.75f)));
+  uint32_t ground = scene.addShape(plane(400.0f, 4));
+  HeightField checks = proceduralHeight({HeightPattern::Checker, 256, 8});
+  Material board = material(glm::vec3(1.0f), glm::vec3(0.0f), 1.0f);
+  board.ka = glm::vec3(1.0f);
+  board.diffuseMap.texture =
+      addTexture(scene, heightColorTexture(checks, glm::vec3(0.04f), glm::vec3(0.85f),
+                                           "procedural checker"));
+  board.uvScale = glm::vec2(200.0f);  // 2 units per repeat: checks 0.25 units wide
+  scene.objects.push_back({"plane", ground, glm::mat4(1.0f), board});
+  return scene;
+}
+
+// Bump mapping: a wall with a normal map derived from bricks (and their
+// colour), and a sphere whose height map of dimples perturbs its normals,
+// under a light that grazes the wall so the relief shows.
+Scene bumpScene() {
+  Scene scene;
+  scene.name = "bump";
+  scene.camera.eye = {0.0f, 1.2f, 5.5f};
+  scene.camera.at = {0.0f, 1.0f, 0.0f};
+  scene.camera.fovyDegrees = 45.0f;
+  scene.ambient = glm::vec3(0.25f);
+  scene.background = {0.03f, 0.03f, 0.04f};
+  scene.lights.push_back(pointLight({-3.5f, 3.0f, 2.5f}, glm::vec3(1.0f), {1.0f, 0.0f, 0.01f}));
+  scene.lights.push_back(directionalLight({0.6f, -0.3f, -1.0f}, glm::vec3(0.25f)));
+
+  HeightField bricks = proceduralHeight({HeightPattern::Bricks, 256, 8});
+  Material wall = material({0.75f, 0.75f, 0.75f}, glm::vec3(0.15f), 16.0f);
+  wall.diffuseMap.texture = addTexture(
+      scene, heightColorTexture(bricks, {0.35f, 0.33f, 0.3f}, {0.55f, 0.16f, 0.08f},
+                                "procedural bricks"));
+  wall.normalMap.texture =
+      addTexture(scene, normalMapTexture(bricks, 4.0f, "procedural bricks (normal map)"));
+  wall.uvScale = glm::vec2(2.0f);
+  uint32_t wallMesh = scene.addShape(plane(8.0f, 1));
+  scene.objects.push_back({"wall", wallMesh,
+                           translation({0.0f, 2.0f, -1.5f}) * rotationX(glm::radians(90.0f)),
+                           wall});
+
+  HeightField dimples = proceduralHeight({HeightPattern::Dimples, 128, 4});
+  Material ball = material({0.2f, 0.45f, 0.8f}, glm::vec3(0.6f), 48.0f);
+  ball.heightMap.texture = addTexture(scene, heightMapTexture(dimples, "procedural dimples"));
+  ball.bumpScale = 3.0f;
+  ball.uvScale = glm::vec2(4.0f, 2.0f);  // square dimples: the equator is twice a meridian
+  uint32_t sphere = scene.addShape(uvSphere(1.0f, 64));
+  scene.objects.push_back({"sphere", sphere, translation({0.0f, 1.0f, 0.5f}), ball});
+  return scene;
+}
+
 const std::map<std::string, std::function<Scene()>>& registry() {
   static const std::map<std::string, std::function<Scene()>> scenes = {
+      {"bump", bumpScene},
       {"default", defaultScene},
       {"dense", denseScene},
       {"env", environmentScene},
       {"highlight", [] { return highlightScene(1); }},
+      {"mip-plane", mipPlaneScene},
       {"spheres", spheresScene},
       {"teapot", teapotScene},
   };

@@ -62,10 +62,6 @@ uint32_t cubeResolution(const Environment& environment) {
   return 1;
 }
 
-uint32_t cubeMipLevels(uint32_t faceSize) {
-  return uint32_t(std::bit_width(faceSize));
-}
-
 glm::vec3 cubeFaceDirection(uint32_t face, glm::vec2 st) {
   glm::vec2 c = 2.0f * st - 1.0f;  // (sc, tc) / |ma|
   switch (face) {

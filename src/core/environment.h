@@ -60,7 +60,6 @@ struct Environment {
 // per panorama texel at a face centre) in 64..2048, or 512 for the sky
 // (its sun's edge is HDR: sharper than a bilinear 256 face shows smoothly).
 uint32_t cubeResolution(const Environment& environment);
-uint32_t cubeMipLevels(uint32_t faceSize);  // down to 1x1
 
 // Vulkan's cube face table (sc, tc, ma per major axis), inverted: the
 // (unnormalised) direction through (s, t) in 0..1 on `face`.

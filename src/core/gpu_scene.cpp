@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
 
 #include <meshoptimizer.h>
 
 #include "core/transform.h"
+#include "core/uv_mapping.h"
 
 namespace shadelab {
 
@@ -22,8 +24,9 @@ static_assert(offsetof(gpu::ObjectData, normalMatrix) == 64);
 static_assert(sizeof(gpu::ObjectData) == 128);
 static_assert(offsetof(gpu::DrawConstants, kd) == 16);
 static_assert(offsetof(gpu::DrawConstants, object) == 48);
-static_assert(offsetof(gpu::DrawConstants, optics) == 64);
-static_assert(sizeof(gpu::DrawConstants) == 80);  // within the 128 bytes Vulkan guarantees
+static_assert(offsetof(gpu::DrawConstants, texturing) == 64);
+static_assert(offsetof(gpu::DrawConstants, optics) == 80);
+static_assert(sizeof(gpu::DrawConstants) == 96);  // within the 128 bytes Vulkan guarantees
 static_assert(sizeof(gpu::SkyParameters) == 96);
 static_assert(offsetof(gpu::SkyParameters, face) == 80);
 static_assert(sizeof(gpu::SkyboxConstants) == 80);
@@ -48,18 +51,45 @@ std::vector<uint32_t> deviceTriangleOrder(const Mesh& mesh) {
   return order;
 }
 
+// Custom meshes (glTF without TANGENT) may come without tangents.
+bool hasTangents(const Mesh& mesh) {
+  return std::all_of(mesh.vertices.begin(), mesh.vertices.end(), [](const Vertex& vertex) {
+    return glm::dot(glm::vec3(vertex.tangent), glm::vec3(vertex.tangent)) > 0.0f;
+  });
+}
+
 }  // namespace
 
 GpuScene uploadScene(const Context& context, const Scene& scene) {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
-  std::vector<DrawItem> meshRanges;
-  for (const Mesh& mesh : scene.meshes) {
-    meshRanges.push_back({uint32_t(indices.size()), uint32_t(mesh.indices.size()),
-                          int32_t(vertices.size()), {}});
+  auto append = [&](const Mesh& mesh) {
+    DrawItem range{uint32_t(indices.size()), uint32_t(mesh.indices.size()),
+                   int32_t(vertices.size()), {}};
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
     std::vector<uint32_t> order = deviceTriangleOrder(mesh);
     indices.insert(indices.end(), order.begin(), order.end());
+    return range;
+  };
+  std::vector<DrawItem> meshRanges;
+  for (const Mesh& mesh : scene.meshes) {
+    if (!hasTangents(mesh)) {
+      Mesh withTangents = mesh;
+      computeTangents(withTangents);
+      meshRanges.push_back(append(withTangents));
+    } else {
+      meshRanges.push_back(append(mesh));
+    }
+  }
+  // One projected copy per (mesh, projection) in use.
+  std::map<std::pair<uint32_t, UvProjection>, DrawItem> projectedRanges;
+  for (const Object& object : scene.objects) {
+    UvProjection projection = object.material.uvProjection;
+    if (projection == UvProjection::Mesh || projectedRanges.count({object.mesh, projection}))
+      continue;
+    Mesh projected = scene.meshes[object.mesh];
+    applyUvProjection(projected, projection);
+    projectedRanges[{object.mesh, projection}] = append(projected);
   }
   GpuScene gpuScene;
   gpuScene.lights = lightLayoutOf(scene);
@@ -69,13 +99,21 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
-    DrawItem draw = meshRanges[object.mesh];
-    draw.constants.ka = glm::vec4(object.material.ka, 0.0f);
-    draw.constants.kd = glm::vec4(object.material.kd, 0.0f);
-    draw.constants.ks = glm::vec4(object.material.ks, object.material.shininess);
-    draw.constants.object = glm::ivec4(int(i), 0, 0, 0);
-    draw.constants.optics = glm::vec4(object.material.reflectivity, object.material.transparency,
-                                      object.material.ior, 0.0f);
+    const Material& material = object.material;
+    DrawItem draw = material.uvProjection == UvProjection::Mesh
+                        ? meshRanges[object.mesh]
+                        : projectedRanges.at({object.mesh, material.uvProjection});
+    draw.constants.ka = glm::vec4(material.ka, 0.0f);
+    draw.constants.kd = glm::vec4(material.kd, 0.0f);
+    draw.constants.ks = glm::vec4(material.ks, material.shininess);
+    int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
+                   (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
+                   (material.heightMap.present() ? TEXTURE_HEIGHT : 0);
+    draw.constants.object = glm::ivec4(int(i), maps, 0, 0);
+    draw.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, 0.0f);
+    draw.constants.optics =
+        glm::vec4(material.reflectivity, material.transparency, material.ior, 0.0f);
+    draw.textured = maps != 0;
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
   }

@@ -21,6 +21,8 @@ struct DrawItem {
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
   gpu::DrawConstants constants{};  // material and object index, pushed per draw
+  bool textured = false;  // the material has a texture: drawn by the textured pipelines
+  VkDescriptorSet materialSet = VK_NULL_HANDLE;  // set 1 when textured (passes/scene_textures)
 };
 
 // How many lights of each kind the shaders loop over: specialization
@@ -45,6 +47,8 @@ struct GpuScene {
   LightLayout lights;
 };
 
+// Objects whose material asks for a UV projection draw a copy of their mesh
+// with projected UVs; meshes without tangents get computed ones (mesh.h).
 GpuScene uploadScene(const Context& context, const Scene& scene);
 
 // Lights move to eye space, so the shaders light with V = -position; the

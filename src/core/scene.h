@@ -65,6 +65,10 @@ struct Texture {
   bool srgb = true;
 };
 
+// Texture coordinates generated for a material instead of the mesh's own
+// (an S-mapping, for meshes without UVs): see core/uv_mapping.h.
+enum class UvProjection { Mesh, Planar, Cylindrical, Spherical, Box };
+
 // A material's use of one texture: an index into Scene::textures (-1: none).
 struct TextureSlot {
   int32_t texture = -1;
@@ -88,6 +92,8 @@ struct Material {
   TextureSlot normalMap;      // tangent space, xyz = 2 * rgb - 1
   TextureSlot heightMap;      // r = height; the normal is perturbed by its derivatives
   float bumpScale = 1.0f;     // normal map xy scale / height map amplitude
+  UvProjection uvProjection = UvProjection::Mesh;  // where the UVs come from
+  glm::vec2 uvScale{1.0f};    // texture repeats per unit of UV (tiling)
 };
 
 struct Object {

@@ -59,6 +59,8 @@
 //             "transparency" kt (0..1, default 0: the mirror and transmitted fractions the
 //             ray tracer and environment mapping add), "ior" (> 0, default 1.5: the inside's
 //             index of refraction, the outside being air) and "emissive" (colour, default 0).
+//             Textures (see below): "diffuse_map", "normal_map", "height_map", "bump_scale",
+//             "sampler", "uv_mapping", "uv_scale".
 // objects     required, may be empty. Each object has "name" (default: its JSON path),
 //             "shape", "material" (a name from "materials" or an inline material object;
 //             default the material defaults), "transform" and "children". An object
@@ -79,6 +81,37 @@
 // (0: faceted, as flat shading sees it; 180: all smooth, e.g. a box with rounded shading).
 // Without it, shapes keep their exact normals.
 // Objects with identical shape descriptions share one mesh.
+//
+// Material textures:
+//   "diffuse_map"  multiplies kd and ka; a colour texture (sRGB, so texels are decoded to
+//                  linear light before filtering and lighting).
+//   "normal_map"   tangent space, xyz = 2 rgb - 1, green toward +v (OpenGL convention); linear.
+//   "height_map"   the red channel is the height h (0..1); linear. The normal is perturbed by
+//                  its central differences per texel: n = (-s dh/du, -s dh/dv, 1).
+//   Each is a file name (relative to the scene file; PNG, JPEG, HDR, EXR, anything
+//   OpenImageIO reads; float images are linear light and are sRGB-encoded for diffuse maps)
+//   or a generator: {"procedural": "checker" | "bricks" | "dimples" | "waves",
+//   "size": 256 (texels per side, 1..4096), "repeats": 8 (cells per side: checks, brick rows,
+//   dimples, wave periods, 1..4096)}. A generator makes a height field h in 0..1: a diffuse
+//   map is then mix(low, high, h) with "colors": [low, high] (linear colours, default
+//   [0, 1]); a height map is h itself; a normal map is derived from h with "depth" (texels
+//   a height of 1 stands for, >= 0, default 4). A missing or unreadable file is an error that
+//   names the file and the material.
+//   "bump_scale"   >= 0, default 1: scales a normal map's xy, and is s above for a height map
+//                  (both maps: their normals are combined). Bump mapping is per fragment:
+//                  Phong and Blinn-Phong apply it; flat and Gouraud ignore normal and height
+//                  maps (their lighting happens before any fragment exists).
+//   "sampler"      for all of the material's maps: {"wrap_u", "wrap_v": "repeat" (default) |
+//                  "clamp_to_edge" | "mirrored_repeat"; "filter": "nearest" (the base level
+//                  only, no mipmaps) | "bilinear" (the nearest mip level) | "trilinear"
+//                  (default) | "aniso" (trilinear plus anisotropic; slow on llvmpipe);
+//                  "anisotropy": 2..16, default 8, only with "aniso"}.
+//   "uv_mapping"   where texture coordinates come from: "mesh" (default: the shape's own UVs)
+//                  or an S-mapping fitted to the mesh's bounds, "planar" (along -z onto xy),
+//                  "cylindrical" (around y), "spherical", "box" (planar along the normal's
+//                  dominant axis); formulas in core/uv_mapping.h.
+//   "uv_scale"     repeats per unit of UV, a number or [u, v] > 0, default 1 (tiling).
+//   UVs have their origin at the image's bottom left (v up).
 //
 // Transforms: "transform" is a list of steps, each an object with exactly one key:
 //   {"translate": [x, y, z]}
@@ -104,6 +137,7 @@
 #include "core/errors.h"
 #include "core/scene_json_environment.h"
 #include "core/scene_json_fields.h"
+#include "core/scene_json_textures.h"
 #include "core/transform.h"
 #include "interface.h"
 
@@ -114,6 +148,7 @@ using scene_json::describe;
 using scene_json::Field;
 using scene_json::formatNumber;
 using scene_json::Names;
+using scene_json::TextureLibrary;
 using MaterialTable = std::map<std::string, Material>;
 
 constexpr int kMaxDepth = 64;  // nested children; deeper is a mistake, not a model
@@ -215,9 +250,12 @@ float unitInterval(const Field& field) {
   return value;
 }
 
-Material parseMaterial(const Field& field) {
-  field.expectObject(
-      {"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "emissive"});
+// `owner` names the material in texture messages ("material 'brick'").
+Material parseMaterial(const Field& field, const std::string& owner, TextureLibrary& textures) {
+  Names allowed = {"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "emissive"};
+  allowed.insert(allowed.end(), TextureLibrary::fieldNames().begin(),
+                 TextureLibrary::fieldNames().end());
+  field.expectObject(allowed);
   Material material;
   if (auto f = field.optional("ka")) material.ka = f->colour();
   if (auto f = field.optional("kd")) material.kd = f->colour();
@@ -227,12 +265,14 @@ Material parseMaterial(const Field& field) {
   if (auto f = field.optional("transparency")) material.transparency = unitInterval(*f);
   if (auto f = field.optional("ior")) material.ior = f->positive();
   if (auto f = field.optional("emissive")) material.emissive = f->colour();
+  textures.parseTextures(field, owner, material);
   return material;
 }
 
-MaterialTable parseMaterials(const Field& field) {
+MaterialTable parseMaterials(const Field& field, TextureLibrary& textures) {
   MaterialTable materials;
-  for (const auto& [name, value] : field.members()) materials[name] = parseMaterial(value);
+  for (const auto& [name, value] : field.members())
+    materials[name] = parseMaterial(value, "material '" + name + "'", textures);
   return materials;
 }
 
@@ -390,8 +430,8 @@ bool sameShape(const ShapeDesc& a, const ShapeDesc& b) {
 // matrix stack of the course, one frame per recursion level.
 class ObjectBuilder {
  public:
-  ObjectBuilder(Scene& scene, const MaterialTable& materials)
-      : scene_(scene), materials_(materials) {}
+  ObjectBuilder(Scene& scene, const MaterialTable& materials, TextureLibrary& textures)
+      : scene_(scene), materials_(materials), textures_(textures) {}
 
   void add(const Field& field, const glm::mat4& parentWorld, int depth) {
     if (depth > kMaxDepth)
@@ -414,7 +454,7 @@ class ObjectBuilder {
     if (auto f = field.optional("transform")) world = parentWorld * parseTransform(*f);
     if (spec) {
       ShapeDesc shape = parseShape(field, *spec);
-      Material surface = material(field);  // checked before the (possibly large) mesh is built
+      Material surface = material(field, name);  // checked before the (possibly large) mesh is built
       scene_.objects.push_back({name, mesh(shape), world, surface});
     }
 
@@ -429,10 +469,11 @@ class ObjectBuilder {
   }
 
  private:
-  Material material(const Field& object) const {
+  Material material(const Field& object, const std::string& objectName) const {
     if (!object.has("material")) return Material{};
     Field field = object.at("material");
-    if (field.json().is_object()) return parseMaterial(field);
+    if (field.json().is_object())
+      return parseMaterial(field, "the material of object '" + objectName + "'", textures_);
     if (!field.json().is_string()) field.wrongType("a material name or a material object");
     auto found = materials_.find(field.string());
     if (found != materials_.end()) return found->second;
@@ -451,6 +492,7 @@ class ObjectBuilder {
 
   Scene& scene_;
   const MaterialTable& materials_;
+  TextureLibrary& textures_;
 };
 
 // "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error ..."
@@ -516,9 +558,10 @@ Scene parseSceneJson(std::string_view text, const std::string& sourceName) {
     scene.environment =
         scene_json::parseEnvironment(*f, std::filesystem::path(sourceName).parent_path());
   if (auto f = root.optional("lights")) scene.lights = parseLights(*f);
+  TextureLibrary textures(scene, std::filesystem::path(sourceName).parent_path());
   MaterialTable materials;
-  if (auto f = root.optional("materials")) materials = parseMaterials(*f);
-  ObjectBuilder builder(scene, materials);
+  if (auto f = root.optional("materials")) materials = parseMaterials(*f, textures);
+  ObjectBuilder builder(scene, materials, textures);
   Field objects = root.required("objects", "an array of objects (it may be empty)");
   for (const Field& object : objects.elements("an array of objects"))
     builder.add(object, glm::mat4(1.0f), 0);

@@ -7,8 +7,8 @@
 #include <glm/gtc/packing.hpp>
 
 #include "core/barriers.h"
+#include "core/texture.h"
 #include "core/vk_check.h"
-#include "passes/mip_chain.h"
 
 namespace shadelab {
 namespace {
@@ -61,7 +61,7 @@ ImageView levelArrayView(const Context& context, const Image& image, uint32_t le
 }  // namespace
 
 EnvironmentBuilder::EnvironmentBuilder(const Context& context)
-    : context_(context), sky_(context), equirect_(context) {}
+    : context_(context), sky_(context), equirect_(context), mips_(context) {}
 
 EnvironmentCube EnvironmentBuilder::allocate(uint32_t faceSize, uint32_t mipLevels) const {
   ImageDesc desc{kFormat, faceSize, faceSize, mipLevels, 6, kCubeUsage};
@@ -75,7 +75,7 @@ EnvironmentCube EnvironmentBuilder::allocate(uint32_t faceSize, uint32_t mipLeve
 EnvironmentCube EnvironmentBuilder::build(const Environment& environment) const {
   assert(environment.present());
   uint32_t size = cubeResolution(environment);
-  EnvironmentCube cube = allocate(size, cubeMipLevels(size));
+  EnvironmentCube cube = allocate(size, mipLevelCount(size, size));
   switch (environment.kind) {
     case EnvironmentKind::Sky:
       buildSky(environment, cube);
@@ -100,14 +100,14 @@ void EnvironmentBuilder::buildSky(const Environment& environment,
     imageBarrier(cmd, cube.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::Undefined,
                  ImageUse::ComputeWrite, 0, 1);
     sky_.record(cmd, level0, sky);
-    recordMipChain(cmd, cube.image, ImageUse::ComputeWrite);
+    recordMips(cmd, cube.image, ImageUse::ComputeWrite);
   });
 }
 
 void EnvironmentBuilder::buildFromPanorama(const Environment& environment,
                                            const EnvironmentCube& cube) const {
   const ImageRgba& source = *environment.panorama;
-  uint32_t levels = cubeMipLevels(std::max(source.width, source.height));
+  uint32_t levels = mipLevelCount(source.width, source.height);
   ImageDesc desc{kFormat,
                  source.width,
                  source.height,
@@ -135,11 +135,13 @@ void EnvironmentBuilder::buildFromPanorama(const Environment& environment,
     region.imageExtent = {source.width, source.height, 1};
     vkCmdCopyBufferToImage(cmd, staging.get(), panorama.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                            1, &region);
-    recordMipChain(cmd, panorama, ImageUse::TransferDest, ImageUse::ComputeRead);
+    recordMips(cmd, panorama, ImageUse::TransferDest);
+    imageBarrier(cmd, panorama.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::ShaderRead,
+                 ImageUse::ComputeRead);
     imageBarrier(cmd, cube.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::Undefined,
                  ImageUse::ComputeWrite, 0, 1);
     equirect_.record(cmd, level0, panorama.view(), sampler, parameters);
-    recordMipChain(cmd, cube.image, ImageUse::ComputeWrite);
+    recordMips(cmd, cube.image, ImageUse::ComputeWrite);
   });
 }
 
@@ -167,8 +169,21 @@ void EnvironmentBuilder::buildFromFaces(const Environment& environment,
     region.imageExtent = {cube.faceSize(), cube.faceSize(), 1};
     vkCmdCopyBufferToImage(cmd, staging.get(), cube.image.get(),
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    recordMipChain(cmd, cube.image, ImageUse::TransferDest);
+    recordMips(cmd, cube.image, ImageUse::TransferDest);
   });
+}
+
+void EnvironmentBuilder::recordMips(VkCommandBuffer cmd, const Image& image,
+                                    ImageUse level0Use) const {
+  // MipGeneration takes every level in TransferDest use.
+  const ImageDesc& desc = image.desc();
+  if (level0Use != ImageUse::TransferDest)
+    imageBarrier(cmd, image.get(), VK_IMAGE_ASPECT_COLOR_BIT, level0Use, ImageUse::TransferDest, 0,
+                 1);
+  if (desc.mipLevels > 1)
+    imageBarrier(cmd, image.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::Undefined,
+                 ImageUse::TransferDest, 1, desc.mipLevels - 1);
+  mips_.record(cmd, image.get(), desc.width, desc.height, desc.mipLevels, desc.layers);
 }
 
 EnvironmentCube EnvironmentBuilder::placeholder() const {

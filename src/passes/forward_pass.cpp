@@ -28,12 +28,25 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
   setLayout_ = DescriptorSetLayout(device, setLayout);
 
+  VkDescriptorSetLayoutBinding textureBindings[3];
+  for (uint32_t binding : {BINDING_DIFFUSE_MAP, BINDING_NORMAL_MAP, BINDING_HEIGHT_MAP})
+    textureBindings[binding] = {binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                VK_SHADER_STAGE_FRAGMENT_BIT};
+  VkDescriptorSetLayoutCreateInfo materialInfo{
+      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  materialInfo.bindingCount = 3;
+  materialInfo.pBindings = textureBindings;
+  VkDescriptorSetLayout materialLayout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(device, &materialInfo, nullptr, &materialLayout));
+  materialSetLayout_ = DescriptorSetLayout(device, materialLayout);
+
   VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                                     VK_SHADER_STAGE_FRAGMENT_BIT,
                                 0, sizeof(gpu::DrawConstants)};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout;
+  VkDescriptorSetLayout setLayouts[] = {setLayout, materialLayout};
+  layoutInfo.setLayoutCount = 2;
+  layoutInfo.pSetLayouts = setLayouts;
   layoutInfo.pushConstantRangeCount = 1;
   layoutInfo.pPushConstantRanges = &pushRange;
   VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -43,17 +56,22 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   vertex_ = loadShader(device, "forward.vert");
   flatGeometry_ = loadShader(device, "forward_flat.geom");
   fragment_ = loadShader(device, "forward.frag");
+  texturedVertex_ = loadShader(device, "forward_textured.vert");
+  texturedFlatGeometry_ = loadShader(device, "forward_textured_flat.geom");
+  texturedFragment_ = loadShader(device, "forward_textured.frag");
 }
 
-void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool environment) {
-  for (int model = 0; model < kShadingModelCount; ++model) {
-    VariantKey key{ShadingModel(model), lights, samples, environment};
-    if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-  }
+void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool textured,
+                          bool environment) {
+  for (int model = 0; model < kShadingModelCount; ++model)
+    for (bool variant : {false, true}) {
+      VariantKey key{ShadingModel(model), lights, samples, variant, environment};
+      if ((!variant || textured) && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+    }
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples, environment] = key;
+  const auto& [model, lights, samples, textured, environment] = key;
   const AttachmentFormats& formats = formats_;
   struct {
     int32_t shadingModel;
@@ -84,10 +102,11 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
     info.pSpecializationInfo = &specialization;
     stages.push_back(info);
   };
-  addStage(VK_SHADER_STAGE_VERTEX_BIT, vertex_);
+  addStage(VK_SHADER_STAGE_VERTEX_BIT, textured ? texturedVertex_ : vertex_);
   // Flat shading needs the whole triangle to find its geometric normal.
-  if (model == ShadingModel::Flat) addStage(VK_SHADER_STAGE_GEOMETRY_BIT, flatGeometry_);
-  addStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment_);
+  if (model == ShadingModel::Flat)
+    addStage(VK_SHADER_STAGE_GEOMETRY_BIT, textured ? texturedFlatGeometry_ : flatGeometry_);
+  addStage(VK_SHADER_STAGE_FRAGMENT_BIT, textured ? texturedFragment_ : fragment_);
 
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   // Only the attributes the shaders read: lavapipe fetches every declared
@@ -98,12 +117,14 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   VkVertexInputAttributeDescription attributes[] = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+      {3, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
   };
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertexInput.vertexBindingDescriptionCount = 1;
   vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = uint32_t(std::size(attributes));
+  vertexInput.vertexAttributeDescriptionCount = textured ? 4 : 2;
   vertexInput.pVertexAttributeDescriptions = attributes;
 
   VkPipelineInputAssemblyStateCreateInfo assembly{
@@ -169,16 +190,31 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t sampl
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({model, scene.lights, samples, environment});
-  assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
+  auto plain = pipelines_.find({model, scene.lights, samples, false, environment});
+  auto textured = pipelines_.find({model, scene.lights, samples, true, environment});
+  assert(plain != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, plain->second);
+  bool texturedBound = false;
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
                           nullptr);
   VkDeviceSize offset = 0;
   VkBuffer vertexBuffer = scene.vertices.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+  VkDescriptorSet materialSet = VK_NULL_HANDLE;
   for (const DrawItem& draw : scene.draws) {
+    if (draw.textured != texturedBound) {
+      assert(textured != pipelines_.end() && "ForwardPass::prepare() not called with textured");
+      texturedBound = draw.textured;
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                        (texturedBound ? textured : plain)->second);
+    }
+    if (draw.textured && draw.materialSet != materialSet) {
+      assert(draw.materialSet != VK_NULL_HANDLE && "textured draw without its material set");
+      materialSet = draw.materialSet;
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &materialSet,
+                              0, nullptr);
+    }
     vkCmdPushConstants(cmd, layout_,
                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
                            VK_SHADER_STAGE_FRAGMENT_BIT,

@@ -34,6 +34,7 @@ ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
 Renderer::Renderer(const Context& context)
     : context_(context),
       forward_(context, {kColorFormat, kDepthFormat}),
+      textures_(context, forward_.materialSetLayout()),
       skybox_(context, {kColorFormat, kDepthFormat}, forward_.descriptorSetLayout()),
       environmentBuilder_(context),
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
@@ -291,9 +292,12 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     throw InputError("split screen: more views than pixel columns");
 
   GpuScene gpuScene = uploadScene(context_, scene);
+  textures_.upload(scene, gpuScene, settings.textures);
+  bool textured = std::any_of(gpuScene.draws.begin(), gpuScene.draws.end(),
+                              [](const DrawItem& draw) { return draw.textured; });
   bindEnvironment(scene, settings.environment);
   bool environment = bool(sceneEnvironment_);
-  forward_.prepare(gpuScene.lights, settings.msaaSamples, environment);
+  forward_.prepare(gpuScene.lights, settings.msaaSamples, textured, environment);
   if (environment) skybox_.prepare(settings.msaaSamples);
   ensureTarget(settings.width, settings.height, settings.msaaSamples);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,

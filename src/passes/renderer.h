@@ -15,6 +15,7 @@
 #include "core/shading.h"
 #include "passes/environment_builder.h"
 #include "passes/forward_pass.h"
+#include "passes/scene_textures.h"
 #include "passes/skybox_pass.h"
 
 namespace shadelab {
@@ -29,6 +30,7 @@ struct RenderSettings {
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
+  TextureOptions textures;  // --filter override, --bump, --mip-tint
   // --env: with a scene environment, the environment term and the skybox;
   // off (or a scene without one) renders with the background colour only.
   bool environment = true;
@@ -99,6 +101,7 @@ class Renderer {
 
   const Context& context_;
   ForwardPass forward_;
+  SceneTextures textures_;
   SkyboxPass skybox_;
   EnvironmentBuilder environmentBuilder_;
   EnvironmentCube placeholderEnvironment_;

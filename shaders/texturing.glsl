@@ -1,0 +1,31 @@
+// Texture mapping for the textured forward variants: set 1 (one per
+// material), texture coordinates, lighting split for the diffuse texel.
+// UVs follow the course convention (origin at the bottom left, v up, see
+// core/mesh.h); images are stored top row first, so t = 1 - v.
+#ifndef TEXTURING_GLSL
+#define TEXTURING_GLSL
+#include "lighting.glsl"
+
+layout(set = 1, binding = BINDING_DIFFUSE_MAP) uniform sampler2D diffuseMap;
+layout(set = 1, binding = BINDING_NORMAL_MAP) uniform sampler2D normalMap;
+layout(set = 1, binding = BINDING_HEIGHT_MAP) uniform sampler2D heightMap;
+
+bool hasMap(int flag) { return (draw.object.y & flag) != 0; }
+
+// Where to sample: the UV scaled by the material's repeats, v flipped.
+vec2 textureCoordinate(vec2 uv) {
+  return vec2(uv.x * draw.texturing.x, 1.0 - uv.y * draw.texturing.y);
+}
+
+// Flat and Gouraud light before the texel is known, so they keep the parts the
+// texel scales (Ia ka + sum f_att Ip kd N.L) apart from the specular sum:
+// I = texel * diffusePart + specularPart, the same equation regrouped.
+void illuminateParts(vec3 position, vec3 normal, out vec3 diffusePart, out vec3 specularPart) {
+  SurfaceMaterial material = drawMaterial();
+  SurfaceMaterial diffuseOnly = SurfaceMaterial(material.ka, material.kd, vec3(0.0), 0.0);
+  SurfaceMaterial specularOnly =
+      SurfaceMaterial(vec3(0.0), vec3(0.0), material.ks, material.shininess);
+  diffusePart = illuminate(position, normal, diffuseOnly, false);
+  specularPart = illuminate(position, normal, specularOnly, false);
+}
+#endif

@@ -1,0 +1,208 @@
+#include "passes/scene_textures.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cstring>
+#include <tuple>
+
+#include "core/barriers.h"
+#include "core/errors.h"
+#include "core/texture.h"
+#include "core/vk_check.h"
+#include "interface.h"
+
+namespace shadelab {
+namespace {
+
+VkSamplerAddressMode addressMode(TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::Repeat:
+      return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case TextureWrap::ClampToEdge:
+      return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case TextureWrap::MirroredRepeat:
+      return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+  }
+  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+VkDeviceSize byteSize(const Texture& texture) {
+  return VkDeviceSize(texture.width) * texture.height * 4;
+}
+
+}  // namespace
+
+std::vector<GpuTexture> uploadTextures(const Context& context, const MipGeneration& mips,
+                                       const std::vector<const Texture*>& textures) {
+  uint32_t maxSize = context.properties().limits.maxImageDimension2D;
+  std::vector<GpuTexture> uploaded;
+  std::vector<Buffer> staging;
+  for (const Texture* texture : textures) {
+    if (texture->width == 0 || texture->height == 0 || texture->width > maxSize ||
+        texture->height > maxSize)
+      throw InputError("texture '" + texture->name + "' is " + std::to_string(texture->width) +
+                       "x" + std::to_string(texture->height) + ", expected 1.." +
+                       std::to_string(maxSize) + " texels per side");
+    assert(texture->rgba8.size() == byteSize(*texture));
+    GpuTexture gpu;
+    gpu.width = texture->width;
+    gpu.height = texture->height;
+    gpu.levels = mipLevelCount(texture->width, texture->height);
+    ImageDesc desc{texture->srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM, gpu.width,
+                   gpu.height, gpu.levels};
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    gpu.image = Image(context, desc);
+    staging.emplace_back(context, byteSize(*texture), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                         MemoryUse::HostVisible);
+    std::memcpy(staging.back().mapped(), texture->rgba8.data(), texture->rgba8.size());
+    uploaded.push_back(std::move(gpu));
+  }
+  if (uploaded.empty()) return uploaded;
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    for (size_t i = 0; i < uploaded.size(); ++i) {
+      const GpuTexture& gpu = uploaded[i];
+      imageBarrier(cmd, gpu.image.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::Undefined,
+                   ImageUse::TransferDest);
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.imageExtent = {gpu.width, gpu.height, 1};
+      vkCmdCopyBufferToImage(cmd, staging[i].get(), gpu.image.get(),
+                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+      mips.record(cmd, gpu.image.get(), gpu.width, gpu.height, gpu.levels);
+    }
+  });
+  return uploaded;
+}
+
+std::vector<uint8_t> readTextureLevel(const Context& context, const GpuTexture& texture,
+                                      uint32_t level) {
+  assert(level < texture.levels);
+  glm::uvec2 size = mipLevelSize(texture.width, texture.height, level);
+  Buffer readback(context, VkDeviceSize(size.x) * size.y * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  MemoryUse::HostVisible);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    VkImage image = texture.image.get();
+    imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::ShaderRead,
+                 ImageUse::TransferSource, level, 1);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+    region.imageExtent = {size.x, size.y, 1};
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.get(), 1,
+                           &region);
+    imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::TransferSource,
+                 ImageUse::ShaderRead, level, 1);
+    transferToHostBarrier(cmd);
+  });
+  const auto* bytes = static_cast<const uint8_t*>(readback.mapped());
+  return {bytes, bytes + readback.size()};
+}
+
+SceneTextures::SceneTextures(const Context& context, VkDescriptorSetLayout materialLayout)
+    : context_(context), materialLayout_(materialLayout), mips_(context) {
+  // Empty slots are bound to these: lavapipe crashes on unwritten descriptors.
+  Texture white = solidTexture({255, 255, 255, 255}, TextureRole::Color, "dummy white");
+  Texture flat = solidTexture({128, 128, 255, 255}, TextureRole::Data, "dummy flat normal");
+  std::vector<GpuTexture> dummies = uploadTextures(context, mips_, {&white, &flat});
+  white_ = std::move(dummies[0]);
+  flatNormal_ = std::move(dummies[1]);
+}
+
+VkSampler SceneTextures::sampler(const SamplerDesc& desc) {
+  auto found = samplers_.find(desc);
+  if (found != samplers_.end()) return found->second;
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  bool linear = desc.filter != TextureFilter::Nearest;
+  info.magFilter = info.minFilter = linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  // Nearest samples the base level only (point sampling, no mipmapping);
+  // bilinear the nearest mip level; trilinear and anisotropic blend two.
+  info.mipmapMode = desc.filter == TextureFilter::Nearest || desc.filter == TextureFilter::Bilinear
+                        ? VK_SAMPLER_MIPMAP_MODE_NEAREST
+                        : VK_SAMPLER_MIPMAP_MODE_LINEAR;
+  info.maxLod = desc.filter == TextureFilter::Nearest ? 0.0f : VK_LOD_CLAMP_NONE;
+  info.addressModeU = addressMode(desc.wrapU);
+  info.addressModeV = addressMode(desc.wrapV);
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  if (desc.filter == TextureFilter::Anisotropic) {
+    if (!context_.features().samplerAnisotropy)
+      throw InputError("filter aniso: this device offers no anisotropic filtering");
+    info.anisotropyEnable = VK_TRUE;
+    info.maxAnisotropy =
+        std::clamp(desc.maxAnisotropy, 1.0f, context_.properties().limits.maxSamplerAnisotropy);
+  }
+  VkSampler handle = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &handle));
+  return samplers_.emplace(desc, Sampler(context_.device(), handle)).first->second;
+}
+
+VkDescriptorSet SceneTextures::writeSet(const Scene& scene, const Material& material,
+                                        const TextureOptions& options) {
+  VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocate.descriptorPool = pool_;
+  allocate.descriptorSetCount = 1;
+  allocate.pSetLayouts = &materialLayout_;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  VK_CHECK(vkAllocateDescriptorSets(context_.device(), &allocate, &set));
+  const std::tuple<uint32_t, const TextureSlot*, const GpuTexture*> slots[] = {
+      {BINDING_DIFFUSE_MAP, &material.diffuseMap, &white_},
+      {BINDING_NORMAL_MAP, &material.normalMap, &flatNormal_},
+      {BINDING_HEIGHT_MAP, &material.heightMap, &flatNormal_},  // any constant height is flat
+  };
+  VkDescriptorImageInfo images[3];
+  VkWriteDescriptorSet writes[3];
+  for (int i = 0; i < 3; ++i) {
+    auto [binding, slot, dummy] = slots[i];
+    assert(!slot->present() || size_t(slot->texture) < scene.textures.size());
+    const GpuTexture& texture = slot->present() ? textures_[size_t(slot->texture)] : *dummy;
+    SamplerDesc desc = slot->sampler;
+    if (options.filterOverride) desc.filter = *options.filterOverride;
+    images[i] = {sampler(desc), texture.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[i].dstSet = set;
+    writes[i].dstBinding = binding;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[i].pImageInfo = &images[i];
+  }
+  vkUpdateDescriptorSets(context_.device(), 3, writes, 0, nullptr);
+  return set;
+}
+
+void SceneTextures::upload(const Scene& scene, GpuScene& gpuScene, const TextureOptions& options) {
+  pool_.reset();
+  textures_.clear();
+  std::vector<const Texture*> sources;
+  for (const Texture& texture : scene.textures) sources.push_back(&texture);
+  textures_ = uploadTextures(context_, mips_, sources);
+
+  uint32_t texturedDraws = uint32_t(std::count_if(gpuScene.draws.begin(), gpuScene.draws.end(),
+                                                  [](const DrawItem& d) { return d.textured; }));
+  if (texturedDraws == 0) return;
+  // Sized once for the scene: at most one set per textured object.
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * texturedDraws};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = texturedDraws;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &size;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorPool(context_.device(), &poolInfo, nullptr, &pool));
+  pool_ = DescriptorPool(context_.device(), pool);
+
+  // Objects whose materials use the same textures and samplers share a set.
+  using SetKey = std::tuple<int32_t, SamplerDesc, int32_t, SamplerDesc, int32_t, SamplerDesc>;
+  std::map<SetKey, VkDescriptorSet> sets;
+  for (DrawItem& draw : gpuScene.draws) {
+    if (!draw.textured) continue;
+    const Material& material = scene.objects[size_t(draw.constants.object.x)].material;
+    SetKey key{material.diffuseMap.texture, material.diffuseMap.sampler,
+               material.normalMap.texture,  material.normalMap.sampler,
+               material.heightMap.texture,  material.heightMap.sampler};
+    auto found = sets.find(key);
+    if (found == sets.end()) found = sets.emplace(key, writeSet(scene, material, options)).first;
+    draw.materialSet = found->second;
+    if (!options.bump) draw.constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
+    if (options.mipTint) draw.constants.object.y |= TEXTURE_MIP_TINT;
+  }
+}
+
+}  // namespace shadelab

@@ -1,0 +1,223 @@
+// Textures on the CPU: mip chain sizes, image files into Texture (sRGB for
+// colour, linear for data), the procedural generators and the normal maps
+// derived from them, and the S-mappings against their written formulas.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "core/errors.h"
+#include "core/image.h"
+#include "core/procedural_textures.h"
+#include "core/texture.h"
+#include "core/uv_mapping.h"
+
+namespace shadelab {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr float kPi = std::numbers::pi_v<float>;
+
+TEST(MipChain, LevelCountIsFloorLog2OfTheLargerSidePlusOne) {
+  EXPECT_EQ(mipLevelCount(1, 1), 1u);
+  EXPECT_EQ(mipLevelCount(2, 1), 2u);
+  EXPECT_EQ(mipLevelCount(37, 23), 6u);  // floor(log2 37) = 5
+  EXPECT_EQ(mipLevelCount(256, 256), 9u);
+  EXPECT_EQ(mipLevelCount(255, 3), 8u);
+  EXPECT_EQ(mipLevelCount(1, 1024), 11u);
+}
+
+TEST(MipChain, SizesHalveRoundingDownAndStopAtOne) {
+  const glm::uvec2 expected[] = {{37, 23}, {18, 11}, {9, 5}, {4, 2}, {2, 1}, {1, 1}};
+  for (uint32_t level = 0; level < 6; ++level)
+    EXPECT_EQ(mipLevelSize(37, 23, level), expected[level]) << "level " << level;
+}
+
+fs::path tempDir() {
+  fs::path dir = fs::temp_directory_path() / ("shadelab-textures-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Writes pixels with OpenImageIO directly, so the channel count and type are the test's.
+template <typename T>
+void writeRaw(const fs::path& path, int width, int height, int channels, OIIO::TypeDesc type,
+              const std::vector<T>& pixels) {
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(path.string(), OIIO::ImageSpec(width, height, channels, type)));
+  ASSERT_TRUE(out->write_image(type, pixels.data()));
+  out->close();
+}
+
+TEST(TextureFile, EightBitPngKeepsItsValuesForColourAndData) {
+  fs::path path = tempDir() / "rgb.png";
+  writeRaw<uint8_t>(path, 2, 1, 3, OIIO::TypeDesc::UINT8, {10, 20, 30, 200, 100, 0});
+  Texture color = loadTextureFile(path, TextureRole::Color);
+  Texture data = loadTextureFile(path, TextureRole::Data);
+  EXPECT_TRUE(color.srgb);
+  EXPECT_FALSE(data.srgb);
+  ASSERT_EQ(color.width, 2u);
+  ASSERT_EQ(color.height, 1u);
+  std::vector<uint8_t> expected = {10, 20, 30, 255, 200, 100, 0, 255};  // alpha added, opaque
+  EXPECT_EQ(color.rgba8, expected);
+  EXPECT_EQ(data.rgba8, expected);
+}
+
+TEST(TextureFile, GreyReplicatesIntoRgb) {
+  fs::path path = tempDir() / "grey.png";
+  writeRaw<uint8_t>(path, 1, 1, 1, OIIO::TypeDesc::UINT8, {77});
+  EXPECT_EQ(loadTextureFile(path, TextureRole::Data).rgba8,
+            (std::vector<uint8_t>{77, 77, 77, 255}));
+}
+
+TEST(TextureFile, FloatExrIsLinearLightEncodedToSrgbForColourOnly) {
+  fs::path path = tempDir() / "half.exr";
+  writeRaw<float>(path, 1, 1, 4, OIIO::TypeDesc::FLOAT, {0.5f, 0.2159f, 2.0f, 0.25f});
+  Texture color = loadTextureFile(path, TextureRole::Color);
+  Texture data = loadTextureFile(path, TextureRole::Data);
+  // sRGB(0.5) = 0.7354 -> 188; sRGB(0.2159) = 0.502 -> 128; 2.0 clamps; alpha stays linear.
+  EXPECT_EQ(color.rgba8, (std::vector<uint8_t>{188, 128, 255, 64}));
+  EXPECT_EQ(data.rgba8, (std::vector<uint8_t>{128, 55, 255, 64}));
+}
+
+TEST(TextureFile, MissingAndUnreadableFilesNameTheFile) {
+  fs::path missing = tempDir() / "nothing.png";
+  try {
+    loadTextureFile(missing, TextureRole::Color);
+    FAIL() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(missing.string()), std::string::npos) << error.what();
+  }
+  fs::path garbage = tempDir() / "garbage.png";
+  std::ofstream(garbage) << "not an image";
+  EXPECT_THROW(loadTextureFile(garbage, TextureRole::Color), InputError);
+}
+
+TEST(Procedural, CheckerAlternatesPerCellAndTiles) {
+  HeightField field = proceduralHeight({HeightPattern::Checker, 16, 4});  // 4x4-texel cells
+  EXPECT_EQ(field.at(0, 0), 1.0f);
+  EXPECT_EQ(field.at(3, 3), 1.0f);
+  EXPECT_EQ(field.at(4, 0), 0.0f);
+  EXPECT_EQ(field.at(0, 4), 0.0f);
+  EXPECT_EQ(field.at(4, 4), 1.0f);
+  EXPECT_EQ(field.at(-1, 0), field.at(15, 0));  // wraps
+}
+
+TEST(Procedural, EveryPatternIsInUnitRangeTilesAndIsDeterministic) {
+  for (HeightPattern pattern : {HeightPattern::Checker, HeightPattern::Bricks,
+                                HeightPattern::Dimples, HeightPattern::Waves}) {
+    ProceduralTexture desc{pattern, 64, 4};
+    HeightField field = proceduralHeight(desc);
+    EXPECT_EQ(field.values, proceduralHeight(desc).values) << heightPatternName(pattern);
+    float low = 1.0f, high = 0.0f;
+    for (float h : field.values) low = std::min(low, h), high = std::max(high, h);
+    EXPECT_GE(low, 0.0f) << heightPatternName(pattern);
+    EXPECT_LE(high, 1.0f) << heightPatternName(pattern);
+    EXPECT_GT(high - low, 0.5f) << heightPatternName(pattern) << " has no relief";
+    // Period 64 / 4 = 16 texels: shifting by a cell (two for the running bond) changes nothing.
+    int32_t period = pattern == HeightPattern::Bricks ? 32 : 16;
+    for (int32_t y = 0; y < 64; y += 7)
+      for (int32_t x = 0; x < 64; x += 5)
+        EXPECT_NEAR(field.at(x, y), field.at(x + period, y + period), 1e-5f)
+            << heightPatternName(pattern) << " at " << x << "," << y;
+  }
+}
+
+TEST(Procedural, DimplesAreDeepestAtTheCellCentre) {
+  HeightField field = proceduralHeight({HeightPattern::Dimples, 32, 1});
+  EXPECT_LT(field.at(16, 16), 0.01f);  // the centre texel is half a texel off the dip
+  EXPECT_EQ(field.at(0, 0), 1.0f);     // the corner is on the flat
+}
+
+TEST(Procedural, NormalFromHeightMatchesTheFormulaOnARamp) {
+  // h = x / 64 rising to the right: dh/du = 1/64 per texel, no v slope.
+  HeightField ramp{64, 4, std::vector<float>(64 * 4)};
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 64; ++x) ramp.values[y * 64 + x] = float(x) / 64.0f;
+  float depth = 8.0f;
+  glm::vec3 expected = glm::normalize(glm::vec3(-depth / 64.0f, 0.0f, 1.0f));
+  glm::vec3 n = heightFieldNormal(ramp, 10, 2, depth);
+  EXPECT_NEAR(glm::distance(n, expected), 0.0f, 1e-6f);
+  // Height rising up the image (toward row 0) tilts the normal toward -v.
+  HeightField up{4, 64, std::vector<float>(4 * 64)};
+  for (uint32_t y = 0; y < 64; ++y)
+    for (uint32_t x = 0; x < 4; ++x) up.values[y * 4 + x] = float(63 - y) / 64.0f;
+  EXPECT_LT(heightFieldNormal(up, 1, 10, depth).y, -0.1f);
+  Texture encoded = normalMapTexture(ramp, depth, "ramp");
+  size_t p = (2 * 64 + 10) * 4;
+  EXPECT_EQ(encoded.rgba8[p + 0], uint8_t(std::lround((expected.x * 0.5f + 0.5f) * 255.0f)));
+  EXPECT_EQ(encoded.rgba8[p + 1], 128);
+  EXPECT_FALSE(encoded.srgb);
+}
+
+TEST(Procedural, ColourTextureIsTheSrgbEncodedLinearMix) {
+  HeightField half{1, 1, {0.5f}};
+  Texture texture = heightColorTexture(half, glm::vec3(0.0f), glm::vec3(1.0f, 0.5f, 0.0f), "t");
+  EXPECT_TRUE(texture.srgb);
+  EXPECT_EQ(texture.rgba8[0], uint8_t(std::lround(linearToSrgb(0.5f) * 255.0f)));
+  EXPECT_EQ(texture.rgba8[1], uint8_t(std::lround(linearToSrgb(0.25f) * 255.0f)));
+  EXPECT_EQ(texture.rgba8[2], 0);
+}
+
+const Bounds kBox{{-1.0f, -2.0f, -4.0f}, {3.0f, 2.0f, 4.0f}};  // centre (1, 0, 0)
+
+void expectUv(glm::vec2 actual, glm::vec2 expected) {
+  EXPECT_NEAR(actual.x, expected.x, 1e-6f);
+  EXPECT_NEAR(actual.y, expected.y, 1e-6f);
+}
+
+TEST(SMapping, PlanarFitsXyToTheBounds) {
+  expectUv(projectUv(UvProjection::Planar, {0.0f, 1.0f, 3.0f}, {}, kBox),
+           {(0.0f + 1.0f) / 4.0f, (1.0f + 2.0f) / 4.0f});
+}
+
+TEST(SMapping, CylindricalIsTheAngleAroundYAndTheHeight) {
+  glm::vec3 p{1.0f + std::cos(0.3f), -1.0f, std::sin(0.3f)};  // d = (cos .3, sin .3) in xz
+  expectUv(projectUv(UvProjection::Cylindrical, p, {}, kBox),
+           {0.5f + std::atan2(std::cos(0.3f), std::sin(0.3f)) / (2.0f * kPi), 0.25f});
+  expectUv(projectUv(UvProjection::Cylindrical, {1.0f, 2.0f, 1.0f}, {}, kBox), {0.5f, 1.0f});
+}
+
+TEST(SMapping, SphericalIsLongitudeAndLatitude) {
+  glm::vec3 d = glm::normalize(glm::vec3(1.0f, 1.0f, -1.0f));
+  glm::vec2 uv =
+      projectUv(UvProjection::Spherical, glm::vec3(1.0f, 0.0f, 0.0f) + 2.0f * d, {}, kBox);
+  expectUv(uv, {0.5f + std::atan2(d.x, d.z) / (2.0f * kPi), 0.5f + std::asin(d.y) / kPi});
+  expectUv(projectUv(UvProjection::Spherical, {1.0f, 5.0f, 0.0f}, {}, kBox).y * glm::vec2(1.0f),
+           glm::vec2(1.0f));  // the north pole
+}
+
+TEST(SMapping, BoxProjectsAlongTheDominantNormalAxisUnmirrored) {
+  glm::vec3 p{2.0f, 1.0f, -2.0f};
+  // +x face, seen from +x: u runs toward -z.
+  expectUv(projectUv(UvProjection::Box, p, {1, 0.2f, 0}, kBox), {(4.0f - -2.0f) / 8.0f, 0.75f});
+  expectUv(projectUv(UvProjection::Box, p, {-1, 0, 0}, kBox), {(-2.0f + 4.0f) / 8.0f, 0.75f});
+  // +y face, seen from above: u along +x, v along -z.
+  expectUv(projectUv(UvProjection::Box, p, {0, 1, 0}, kBox), {0.75f, 0.75f});
+  // -z face, seen from -z: u runs toward -x.
+  expectUv(projectUv(UvProjection::Box, p, {0, 0, -1}, kBox), {0.25f, 0.75f});
+  expectUv(projectUv(UvProjection::Box, p, {0, 0, 1}, kBox), {0.75f, 0.75f});
+}
+
+TEST(SMapping, FlatBoundsMapToTheMiddle) {
+  Bounds flat{{0.0f, 0.0f, 0.0f}, {2.0f, 0.0f, 1.0f}};
+  expectUv(projectUv(UvProjection::Planar, {1.0f, 0.0f, 0.5f}, {}, flat), {0.5f, 0.5f});
+}
+
+TEST(SMapping, ApplyReplacesUvsAndRecomputesUnitTangents) {
+  Mesh mesh = makeUvSphere(1.0f, 16, 8);
+  applyUvProjection(mesh, UvProjection::Planar);
+  Bounds bounds = computeBounds(mesh);
+  for (const Vertex& vertex : mesh.vertices) {
+    expectUv(vertex.uv, projectUv(UvProjection::Planar, vertex.position, vertex.normal, bounds));
+    float length = glm::length(glm::vec3(vertex.tangent));
+    EXPECT_NEAR(length, 1.0f, 1e-4f);
+    EXPECT_NEAR(glm::dot(glm::vec3(vertex.tangent), vertex.normal), 0.0f, 1e-4f);
+  }
+}
+
+}  // namespace
+}  // namespace shadelab
