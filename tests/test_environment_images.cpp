@@ -7,6 +7,7 @@
 
 #include "core/optics.h"
 #include "core/scene_loader.h"
+#include "core/texture.h"
 #include "core/transform.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
@@ -34,7 +35,8 @@ Material environmentOnly(float reflectivity, float transparency) {
 using EnvironmentShading = GpuTest;
 
 // With ka = kd = ks = 0 the colour is the environment term alone: kr c for a
-// mirror and kt [F c + (1 - F) c] = kt c for glass, whatever F is.
+// mirror and kt [F c + (1 - F) c] = kt c for glass, whatever F is; a
+// textured mirror (its texel scales kd = 0) takes the textured variants.
 TEST_F(EnvironmentShading, ConstantEnvironmentTimesReflectivityInEveryLitModel) {
   glm::vec3 colour{0.8f, 0.5f, 0.2f};
   Scene scene;
@@ -42,9 +44,13 @@ TEST_F(EnvironmentShading, ConstantEnvironmentTimesReflectivityInEveryLitModel) 
   scene.camera.eye = {0.0f, 0.0f, 6.0f};
   scene.environment = constantSky(colour);
   scene.lights.push_back({});
-  uint32_t sphere = scene.addShape({ShapeKind::UvSphere, 1.0f, {}, 1.0f, 1.0f, 0.25f, 24});
-  scene.objects.push_back({"mirror", sphere, translation({-1.2f, 0, 0}), environmentOnly(0.6f, 0)});
-  scene.objects.push_back({"glass", sphere, translation({1.2f, 0, 0}), environmentOnly(0, 0.35f)});
+  uint32_t sphere = scene.addShape({ShapeKind::UvSphere, 1.0f, {}, 0.7f, 1.0f, 0.25f, 24});
+  scene.objects.push_back({"mirror", sphere, translation({-1.6f, 0, 0}), environmentOnly(0.6f, 0)});
+  scene.objects.push_back({"glass", sphere, translation({1.6f, 0, 0}), environmentOnly(0, 0.35f)});
+  scene.textures.push_back(solidTexture({200, 30, 30, 255}, TextureRole::Color, "red"));
+  Material textured = environmentOnly(0.8f, 0);
+  textured.diffuseMap.texture = 0;
+  scene.objects.push_back({"textured", sphere, glm::mat4(1.0f), textured});
   float worstOverall = 0.0f;
   for (ShadingModel model :
        {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong, ShadingModel::BlinnPhong}) {
@@ -52,12 +58,13 @@ TEST_F(EnvironmentShading, ConstantEnvironmentTimesReflectivityInEveryLitModel) 
       RenderSettings settings{160, 90, model, 1};
       settings.msaaSamples = samples;
       ImageRgba image = renderer().renderToImage(scene, settings).image;
-      // Sphere centres project to x = 80 -+ 21.7 (fovy 45 at distance 6); sample their insides.
+      // Sphere centres project to x = 80 -+ 29 (fovy 45 at distance 6), radius
+      // 12.7 pixels; sample their insides.
       float worst = 0.0f;
-      for (auto [centreX, expected] :
-           {std::pair{58, 0.6f * colour}, std::pair{102, 0.35f * colour}})
-        for (int dy = -10; dy <= 10; dy += 2)
-          for (int dx = -10; dx <= 10; dx += 2) {
+      for (auto [centreX, expected] : {std::pair{51, 0.6f * colour}, std::pair{109, 0.35f * colour},
+                                       std::pair{80, 0.8f * colour}})
+        for (int dy = -8; dy <= 8; dy += 2)
+          for (int dx = -8; dx <= 8; dx += 2) {
             glm::vec3 got(image.at(uint32_t(centreX + dx), uint32_t(45 + dy)));
             worst = std::max(worst, glm::length(got - expected));
           }
