@@ -109,7 +109,7 @@ struct SkyParameters {
 // The skybox pass, as push constants.
 struct SkyboxConstants {
   mat4 clipToWorld;  // inverse(projection * view rotation): clip position -> world direction
-  vec4 depth;        // x = the depth the objects' depth buffer was cleared to (the far plane)
+  vec4 depth;        // x = the far plane's depth (what the depth buffer is cleared to), y = the near's
 };
 
 // Equirectangular panorama -> cube conversion.

@@ -12,8 +12,9 @@ layout(location = 0) in vec2 inClip;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  vec4 near = skybox.clipToWorld * vec4(inClip, 0.0, 1.0);
-  vec4 far = skybox.clipToWorld * vec4(inClip, 1.0, 1.0);
+  // Reversed-Z swaps the planes' depths; depth.xy says which is which.
+  vec4 near = skybox.clipToWorld * vec4(inClip, skybox.depth.y, 1.0);
+  vec4 far = skybox.clipToWorld * vec4(inClip, skybox.depth.x, 1.0);
   vec3 direction = far.xyz / far.w - near.xyz / near.w;
   outColor = vec4(texture(environmentMap, direction).rgb, 1.0);
 }

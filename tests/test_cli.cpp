@@ -8,7 +8,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include "core/image.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -165,6 +169,9 @@ TEST_F(Cli, InfoNamesDeviceDriverAndVersion) {
   EXPECT_NE(r.output.find("device:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("driver:"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("vulkan:          1.3"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("depth modes:     d16 d24 d32f reversed\n"), std::string::npos)
+      << "lavapipe renders to every depth format\n"
+      << r.output;
 }
 
 TEST_F(Cli, HelpSucceedsForEachCommand) {
@@ -253,13 +260,15 @@ TEST_F(Cli, CompareUnknownModeIsAnInputError) {
 
 TEST_F(Cli, BenchWritesOneCsvRowPerSetting) {
   CommandResult r = run("bench spheres -o " + out("bench") +
-                        " --size 64x36 --frames 4 --rounds 2 --modes unlit,phong --tess 0.5,1");
+                        " --size 64x36 --frames 4 --rounds 2 --modes unlit,phong --tess 0.5,1 "
+                        "--msaa 1");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::string csv = readText(out("bench/results.csv"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;
-  EXPECT_EQ(csv.rfind("scene,width,height,mode,tessellation,msaa,triangles,frames,", 0), 0u) << csv;
+  EXPECT_EQ(csv.rfind("scene,width,height,mode,tessellation,msaa,filter,triangles,frames,", 0), 0u)
+      << csv;
   // 2 rounds x (4 frames - 1 warm-up) steady frames per setting.
-  EXPECT_NE(csv.find("spheres,64,36,phong,0.5,1,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("spheres,64,36,phong,0.5,1,material,"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",6,"), std::string::npos) << csv;
   EXPECT_NE(r.output.find("x floor"), std::string::npos) << r.output;
 }
@@ -305,6 +314,178 @@ TEST_F(Cli, BenchBadSampleCountIsAUsageError) {
   CommandResult r = run("bench -o " + out("bench") + " --msaa 1,3");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("--msaa"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
+TEST_F(Cli, BadDepthValueIsAnInputError) {
+  CommandResult r = run("render -o " + out("a.png") + " --depth d8");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--depth 'd8': expected one of d16, d24, d32f, reversed"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
+TEST_F(Cli, RenderWithEachDepthMode) {
+  for (const char* depth : {"d16", "d24", "d32f", "reversed"}) {
+    std::string name = std::string(depth) + ".png";
+    CommandResult r = run("render zfight -o " + out(name) + " --size 48x27 --depth " + depth);
+    ASSERT_EQ(r.exitCode, 0) << depth << "\n" << r.output;
+    EXPECT_EQ(pngSize(out(name)), std::make_pair(48u, 27u)) << depth;
+  }
+}
+
+// Splits CSV text into rows of cells (no quoting: bench output has none).
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    rows.emplace_back();
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) rows.back().push_back(cell);
+    if (!line.empty() && line.back() == ',') rows.back().emplace_back();
+  }
+  return rows;
+}
+
+// A chart decodes as a PNG, is mostly white paper, and has ink, grid and
+// series colours on it: more than a blank or single-colour image.
+void expectDrawnChart(const std::string& path) {
+  shadelab::ImageU8 image = shadelab::readImageU8(path);
+  size_t white = 0;
+  std::vector<uint32_t> colours;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) {
+      glm::u8vec4 p = image.at(x, y);
+      white += p == glm::u8vec4(255);
+      uint32_t packed = uint32_t(p.r) << 16 | uint32_t(p.g) << 8 | p.b;
+      if (colours.size() < 64 && std::find(colours.begin(), colours.end(), packed) == colours.end())
+        colours.push_back(packed);
+    }
+  double paper = double(white) / (double(image.width) * image.height);
+  EXPECT_GT(paper, 0.5) << path;
+  EXPECT_LT(paper, 0.99) << path;
+  EXPECT_GT(colours.size(), 8u) << path;
+}
+
+TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
+  CommandResult r = run("bench zfight -o " + out("z") + " --size 160x90 --near 0.01,10");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("z/zfight.csv")));
+  ASSERT_EQ(rows.size(), 1u + 2 * 4 * 2) << "header + projections x depth modes x near planes";
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"projection", "depth", "format", "near", "far", "gap",
+                                               "width", "height", "covered_pixels", "wrong_pixels",
+                                               "wrong_fraction"}));
+  EXPECT_EQ(rows[1][0], "perspective");
+  EXPECT_EQ(rows[1][1], "d16");
+  EXPECT_EQ(rows[1][2], "D16_UNORM");
+  EXPECT_EQ(rows[16][0], "orthographic");
+  EXPECT_EQ(rows[16][1], "reversed");
+  auto [width, height] = pngSize(out("z/zfight.png"));
+  EXPECT_GT(width, 1000u);
+  EXPECT_GT(height, 300u);
+  expectDrawnChart(out("z/zfight.png"));
+  EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
+}
+
+const std::vector<std::string> kBenchColumns = {
+    "scene", "width", "height", "mode", "tessellation", "msaa", "filter", "triangles", "frames",
+    "device_median_ms", "device_p95_ms", "wall_median_ms", "wall_p95_ms", "device_memory_mb",
+    "peak_rss_mb", "reference", "rmse", "psnr"};
+
+TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
+  CommandResult r = run("bench default -o " + out("b") +
+                        " --size 64x36 --frames 3 --rounds 1 --modes flat,phong --tess 0.5,1 "
+                        "--msaa 1,4");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("b/results.csv")));
+  ASSERT_EQ(rows.size(), 1u + 2 * 2 * 2) << "header + models x tessellations x sample counts";
+  EXPECT_EQ(rows[0], kBenchColumns);
+  for (size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), kBenchColumns.size());
+    EXPECT_EQ(rows[i][6], "material");
+    EXPECT_GT(std::stod(rows[i][13]), 0.0) << "device memory";
+    EXPECT_GE(std::stod(rows[i][16]), 0.0) << "rmse";
+    EXPECT_GT(std::stod(rows[i][17]), 10.0) << "psnr";
+  }
+  // The reference is Phong at 4x tessellation and 4x MSAA, so finer and
+  // multisampled Phong errs less than coarse flat.
+  EXPECT_EQ(rows[1][3], "flat");
+  EXPECT_EQ(rows[8][3], "phong");
+  EXPECT_LT(std::stod(rows[8][16]), std::stod(rows[1][16]));
+  for (const char* chart : {"b/error_vs_time.png", "b/error_vs_triangles.png"}) {
+    EXPECT_EQ(pngSize(out(chart)), std::make_pair(1100u, 640u)) << chart;
+    expectDrawnChart(out(chart));
+  }
+  EXPECT_NE(r.output.find("Pareto front"), std::string::npos) << r.output;
+}
+
+// The texture filter is an axis too: on the receding checkerboard, nearest
+// sampling (no mipmaps) errs more against the trilinear reference.
+TEST_F(Cli, BenchSweepsTextureFilters) {
+  CommandResult r = run("bench mip-plane -o " + out("f") +
+                        " --size 96x54 --frames 3 --rounds 1 --modes phong --tess 1 --msaa 1 "
+                        "--filters nearest,trilinear");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("f/results.csv")));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[1][6], "nearest");
+  EXPECT_EQ(rows[2][6], "trilinear");
+  EXPECT_GT(std::stod(rows[1][16]), std::stod(rows[2][16])) << "rmse, nearest against trilinear";
+  CommandResult bad = run("bench -o " + out("g") + " --filters blurry");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--filters 'blurry'"), std::string::npos) << bad.output;
+}
+
+// With bench results given, the loosest bound picks the row the CSV says is cheapest.
+TEST_F(Cli, QualityWithLooseBoundPicksTheCheapestBenchedSetting) {
+  ASSERT_EQ(run("bench default -o " + out("b") +
+                " --size 64x36 --frames 3 --rounds 1 --modes flat,gouraud,phong --tess 0.5,1 "
+                "--msaa 1")
+                .exitCode,
+            0);
+  auto rows = csvRows(readText(out("b/results.csv")));
+  ASSERT_EQ(rows.size(), 7u);
+  size_t cheapest = 1;
+  for (size_t i = 2; i < rows.size(); ++i)
+    if (std::stod(rows[i][9]) < std::stod(rows[cheapest][9])) cheapest = i;
+  std::string expected = "chose " + rows[cheapest][3] + " t" + rows[cheapest][4] + " 1x";
+  CommandResult r = run("render default -o " + out("q.png") +
+                        " --size 64x36 --quality 1000 --bench " + out("b"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  EXPECT_EQ(pngSize(out("q.png")), std::make_pair(64u, 36u));
+}
+
+// RMSE 0 is met only by the reference's own setting: Phong, 4x tessellation, 4x MSAA.
+TEST_F(Cli, QualityWithTightestBoundPicksOnlyTheExactSetting) {
+  CommandResult r = run("render default -o " + out("q.png") + " --size 64x36 --msaa 4 --quality 0");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("chose phong t4 4x"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("quick sweep"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, UnreachableQualityIsAnInputError) {
+  CommandResult r =
+      run("render default -o " + out("q.png") + " --size 64x36 --quality 99 --metric psnr");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("no setting reaches psnr >= 99"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
+TEST_F(Cli, QualityWithModeIsAUsageError) {
+  CommandResult r = run("render -o " + out("q.png") + " --quality 2 --mode flat");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("excludes"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
+TEST_F(Cli, BenchFolderWithoutQualityIsAUsageError) {
+  CommandResult r = run("render -o " + out("q.png") + " --bench " + out("b"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--quality"), std::string::npos) << r.output;
   EXPECT_EQ(filesLeft(), 0u);
 }
 

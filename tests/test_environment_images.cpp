@@ -5,6 +5,7 @@
 // background-only render; goldens with must-fail twins.
 #include <cmath>
 
+#include "core/depth.h"
 #include "core/optics.h"
 #include "core/scene_loader.h"
 #include "core/texture.h"
@@ -176,6 +177,25 @@ TEST_F(EnvironmentShading, EnvOffIsTheBackgroundOnlyRender) {
   ImageU8 a = render(scene, off);
   EXPECT_EQ(compareImages(a, render(without, {160, 90, ShadingModel::Phong, 1})).maxDifference, 0);
   EXPECT_GT(compareImages(a, render(scene, {160, 90, ShadingModel::Phong, 1})).rmse, 5.0);
+}
+
+// The skybox fills exactly what the depth buffer still holds at its cleared
+// far value, in every depth mode (reversed-Z clears to 0 and swaps the
+// planes): the same image as D32F within the golden tolerance, and not the
+// background-only render.
+TEST_F(EnvironmentShading, EveryDepthModeDrawsTheSameSkybox) {
+  Scene scene = builtinScene("env");
+  RenderSettings settings{160, 90, ShadingModel::Phong, 1};
+  ImageU8 reference = render(scene, settings);
+  RenderSettings off = settings;
+  off.environment = false;
+  ImageU8 background = render(scene, off);
+  for (DepthMode mode : kDepthModes) {
+    settings.depth = mode;
+    ImageU8 image = render(scene, settings);
+    EXPECT_TRUE(matchesImage(reference, image)) << depthModeName(mode);
+    EXPECT_FALSE(matchesImage(background, image)) << depthModeName(mode);
+  }
 }
 
 // The renderer keeps the cube while the environment stays the same; any

@@ -430,6 +430,33 @@ TEST(PerspectiveReversedZ, MatchesGlmWithNearAndFarSwapped) {
                              flipY(glm::perspectiveRH_ZO(radians(60.0f), 1.5f, 40.0f, 0.5f))));
 }
 
+TEST(ReverseDepth, TextbookRowsTurnDepthIntoOneMinusDepth) {
+    EXPECT_TRUE(matricesNear(reverseDepth(),
+                             rows({1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, -1, 1}, {0, 0, 0, 1})));
+    // Written out as its own formula, the reversed perspective equals the standard one
+    // with depth reversed afterwards.
+    EXPECT_TRUE(matricesNear(perspectiveReversedZ(radians(60.0f), 1.5f, 0.5f, 40.0f),
+                             reverseDepth() * perspective(radians(60.0f), 1.5f, 0.5f, 40.0f)));
+}
+
+TEST(FrustumReversedZ, NearToOneFarToZero) {
+    const glm::mat4 m = frustumReversedZ(-1, 3, -2, 6, 1, 3);
+    // The near-plane window's corners land at depth 1, points on the far plane at 0.
+    EXPECT_TRUE(vectorsNear(project(m, {-1, 6, -1}), glm::vec3(-1, -1, 1)));
+    EXPECT_TRUE(vectorsNear(project(m, {9, -6, -3}), glm::vec3(1, 1, 0)));
+    EXPECT_NEAR(project(m, {0, 0, -1.5f}).z, 1.0f - project(frustum(-1, 3, -2, 6, 1, 3),
+                                                             {0, 0, -1.5f}).z, kTolerance);
+}
+
+TEST(OrthographicReversedZ, NearToOneFarToZeroLinearInBetween) {
+    const glm::mat4 m = orthographicReversedZ(-1, 3, -2, 6, 1, 3);
+    EXPECT_TRUE(vectorsNear(project(m, {-1, 6, -1}), glm::vec3(-1, -1, 1)));
+    EXPECT_TRUE(vectorsNear(project(m, {3, -2, -3}), glm::vec3(1, 1, 0)));
+    // Orthographic depth is linear: halfway between the planes is 0.5 either way round.
+    EXPECT_NEAR(project(m, {0, 0, -2}).z, 0.5f, kTolerance);
+    EXPECT_TRUE(matricesNear(m, flipY(glm::orthoRH_ZO(-1.0f, 3.0f, -2.0f, 6.0f, 3.0f, 1.0f))));
+}
+
 TEST(ViewportTransform, NdcCornersMapToTheViewportRectangle) {
     const Viewport vp{.x = 10, .y = 20, .width = 640, .height = 480, .minDepth = 0.1f,
                       .maxDepth = 0.9f};

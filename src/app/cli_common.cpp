@@ -29,6 +29,13 @@ ShadingModel parseShadingModelOption(const std::string& text, const std::string&
   throw InputError(option + " '" + text + "': expected one of " + names);
 }
 
+DepthMode parseDepthModeOption(const std::string& text, const std::string& option) {
+  if (std::optional<DepthMode> mode = parseDepthMode(text)) return *mode;
+  std::string names;
+  for (const std::string& name : depthModeNames()) names += (names.empty() ? "" : ", ") + name;
+  throw InputError(option + " '" + text + "': expected one of " + names);
+}
+
 std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option) {
   std::vector<ShadingModel> models;
   std::stringstream stream(text);

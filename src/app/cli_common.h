@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "core/context.h"
+#include "core/depth.h"
 #include "core/shading.h"
 
 namespace shadelab {
@@ -21,6 +22,7 @@ Size parseSize(const std::string& text, const std::string& option);
 // "flat,phong" -> models, in order; throws InputError naming a bad entry.
 std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option);
 ShadingModel parseShadingModelOption(const std::string& text, const std::string& option);
+DepthMode parseDepthModeOption(const std::string& text, const std::string& option);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.

@@ -1,18 +1,26 @@
 // shadelab bench: frame times of a scene under each combination of shading
-// model, tessellation and MSAA, measured in interleaved rounds, printed as a
-// table with each mode's cost against the constant-colour floor (unlit) and
-// written to DIR/results.csv. Error against the reference and the charts come
-// with the ray-traced reference.
+// model, tessellation and MSAA, measured in interleaved rounds, with each
+// setting's memory and error against a reference; printed as a table with
+// each mode's cost against the constant-colour floor (unlit), written to
+// DIR/results.csv and charted (error against time with the Pareto front,
+// error against triangles). `--sweep depth` (the default for the zfight
+// scene) measures z-fighting per depth mode instead.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/errors.h"
 #include "core/files.h"
 #include "core/scene_loader.h"
+#include "core/texture.h"
+#include "passes/bench_charts.h"
 #include "passes/benchmark.h"
+#include "passes/zfight.h"
 
 namespace shadelab {
 namespace {
@@ -23,10 +31,16 @@ struct BenchCommandOptions {
   std::string output;
   std::string size = "1280x720";
   std::string modes = "unlit,flat,gouraud,phong,blinn-phong";
-  std::vector<float> tessellations{1.0f};
-  std::vector<uint32_t> msaa{1};
-  uint32_t frames = 120;
-  uint32_t rounds = 3;
+  std::vector<float> tessellations{0.5f, 1.0f, 2.0f};
+  std::vector<uint32_t> msaa{1, 4};
+  std::string reference = "raster";
+  std::string metric = "rmse";
+  std::string filters = "material";
+  uint32_t frames = 60;
+  uint32_t rounds = 2;
+  std::string sweep;  // "settings" or "depth"; empty: depth for the zfight scene
+  std::vector<float> nearPlanes{0.001f, 0.01f, 0.1f, 1.0f, 10.0f};
+  bool sizeGiven = false;
 };
 
 // Creates DIR if needed (its parent must exist); throws InputError naming it.
@@ -43,17 +57,119 @@ void prepareOutputFolder(const fs::path& folder) {
     throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
+// "material,nearest" -> {none, Nearest}; throws InputError naming a bad entry.
+std::vector<std::optional<TextureFilter>> parseFilterList(const std::string& text) {
+  std::vector<std::optional<TextureFilter>> filters;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (item == "material") {
+      filters.push_back(std::nullopt);
+    } else if (std::optional<TextureFilter> filter = parseTextureFilter(item)) {
+      filters.push_back(filter);
+    } else {
+      throw InputError("--filters '" + item +
+                       "': expected material, nearest, bilinear, trilinear or aniso");
+    }
+  }
+  if (filters.empty()) throw InputError("--filters '" + text + "': expected at least one filter");
+  return filters;
+}
+
+// One line per setting: cost (with the multiple of the unlit floor), memory,
+// error; settings on the Pareto front are starred.
+void printResults(const std::vector<BenchResult>& results, const ErrorMetric& metric,
+                  size_t metricIndex) {
+  std::vector<size_t> front =
+      benchParetoFront(results, chartedResults(results, metricIndex), metricIndex, metric);
+  std::printf("%-12s %5s %5s %-9s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess", "msaa",
+              "filter", "triangles", "median ms", "p95 ms", "x floor", "dev MB", "rss MB",
+              metric.name.c_str());
+  for (size_t i = 0; i < results.size(); ++i) {
+    const BenchResult& r = results[i];
+    const BenchResult* floor = nullptr;
+    for (const BenchResult& f : results)
+      if (f.point.model == ShadingModel::Unlit && f.point.tessellation == r.point.tessellation &&
+          f.point.msaaSamples == r.point.msaaSamples && f.point.filter == r.point.filter)
+        floor = &f;
+    char ratio[16] = "-";
+    if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
+    bool onFront = std::find(front.begin(), front.end(), i) != front.end();
+    std::printf("%-12s %5g %5u %-9s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
+                std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
+                r.point.msaaSamples, benchFilterName(r.point.filter).c_str(),
+                static_cast<unsigned long long>(r.triangles), r.deviceMedianMs, r.deviceP95Ms,
+                ratio, double(r.deviceMemoryBytes) / (1 << 20),
+                double(r.peakResidentBytes) / (1 << 20),
+                metricIndex < r.errors.size() ? r.errors[metricIndex] : 0.0, onFront ? " *" : "");
+  }
+  std::printf(
+      "* on the Pareto front of device time against %s; dev MB: device memory "
+      "shadelab allocated, rss MB: process peak resident set (VmHWM)\n",
+      metric.name.c_str());
+}
+
+// The depth sweep: z-fighting per depth mode, projection and near plane.
+int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& global) {
+  if (!options.scene.empty() && options.scene != "zfight")
+    throw InputError("--sweep depth: measures the built-in zfight scene, not '" + options.scene +
+                     "'");
+  Size size = parseSize(options.sizeGiven ? options.size : "640x360", "--size");
+  prepareOutputFolder(options.output);
+  std::unique_ptr<Context> context = openContext(global);
+  std::vector<ZFightMeasurement> results;
+  {
+    Renderer renderer(*context);
+    std::fprintf(stderr, "bench zfight: %zu near planes x 4 depth modes x 2 projections at %ux%u\n",
+                 options.nearPlanes.size(), size.width, size.height);
+    results = runZFightSweep(
+        renderer, options.nearPlanes, size.width, size.height,
+        [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
+  }
+  fs::path csv = fs::path(options.output) / "zfight.csv";
+  fs::path chart = fs::path(options.output) / "zfight.png";
+  writeTextFile(csv, zfightCsv(results, size.width, size.height));
+  writeImage(zfightChart(results), chart);
+
+  std::printf("pixels where the farther plane wins (%%), planes %g apart\n", kZFightGap);
+  std::printf("%-13s %9s", "projection", "near");
+  for (DepthMode depth : kDepthModes)
+    std::printf(" %9s", std::string(depthModeName(depth)).c_str());
+  std::printf("\n");
+  for (Projection projection : {Projection::Perspective, Projection::Orthographic})
+    for (float near : options.nearPlanes) {
+      std::printf("%-13s %9g",
+                  projection == Projection::Perspective ? "perspective" : "orthographic", near);
+      for (DepthMode depth : kDepthModes)
+        for (const ZFightMeasurement& m : results)
+          if (m.projection == projection && m.depth == depth && m.near == near)
+            std::printf(" %9.2f", 100.0 * m.wrongFraction());
+      std::printf("\n");
+    }
+  std::printf("wrote %s and %s\n", csv.c_str(), chart.c_str());
+  return finishWithValidation(*context, 0);
+}
+
 int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
+  std::string sweep =
+      options.sweep.empty() ? (options.scene == "zfight" ? "depth" : "settings") : options.sweep;
+  if (sweep == "depth") return runDepthSweep(options, global);
+  if (sweep != "settings")
+    throw InputError("--sweep '" + options.sweep + "': expected settings or depth");
   Size size = parseSize(options.size, "--size");
-  std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
+  BenchAxes axes{parseShadingModelList(options.modes, "--modes"), options.tessellations,
+                 options.msaa, parseFilterList(options.filters)};
+  BenchOptions bench{size.width,
+                     size.height,
+                     options.frames,
+                     options.rounds,
+                     findReference(options.reference, "--reference"),
+                     errorMetrics()};
+  const ErrorMetric& charted = findErrorMetric(options.metric, "--metric");
+  size_t chartedIndex = size_t(&charted - errorMetrics().data());
   Scene scene = loadScene(options.scene);
   prepareOutputFolder(options.output);
-
-  std::vector<BenchPoint> points;
-  for (float tessellation : options.tessellations)
-    for (uint32_t samples : options.msaa)
-      for (ShadingModel model : models) points.push_back({model, tessellation, samples});
-  BenchOptions bench{size.width, size.height, options.frames, options.rounds};
+  std::vector<BenchPoint> points = benchPoints(axes);
 
   std::unique_ptr<Context> context = openContext(global);
   std::vector<BenchResult> results;
@@ -62,29 +178,22 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     std::fprintf(stderr, "bench: scene %s at %ux%u, %zu settings x %u rounds x %u frames\n",
                  scene.name.c_str(), size.width, size.height, points.size(), options.rounds,
                  options.frames);
-    results = runBenchmark(renderer, scene, points, bench,
-                           [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
+    results = runBenchmark(renderer, scene, points, bench, [](const std::string& line) {
+      std::fprintf(stderr, "  %s\n", line.c_str());
+    });
   }
-  fs::path csv = fs::path(options.output) / "results.csv";
-  writeTextFile(csv, benchCsv(results, bench, scene.name));
-
-  std::printf("%-12s %6s %5s %10s %12s %9s %9s\n", "mode", "tess", "msaa", "triangles",
-              "median ms", "p95 ms", "x floor");
-  for (const BenchResult& r : results) {
-    const BenchResult* floor = nullptr;
-    for (const BenchResult& f : results)
-      if (f.point.model == ShadingModel::Unlit && f.point.tessellation == r.point.tessellation &&
-          f.point.msaaSamples == r.point.msaaSamples)
-        floor = &f;
-    char ratio[16] = "-";
-    if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
-    std::printf("%-12s %6g %5u %10llu %12.3f %9.3f %9s\n",
-                std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
-                r.point.msaaSamples, static_cast<unsigned long long>(r.triangles),
-                r.deviceMedianMs, r.deviceP95Ms, ratio);
-  }
-  std::printf("device medians over %zu steady frames per setting; wrote %s\n",
-              results.empty() ? size_t(0) : results.front().frames, csv.string().c_str());
+  fs::path folder(options.output);
+  writeTextFile(folder / "results.csv", benchCsv(results, bench, scene.name));
+  std::string title = "Scene " + scene.name + " at " + options.size + ", against the " +
+                      bench.reference.name + " reference";
+  writeImage(errorTimeChart(results, chartedIndex, charted, title), folder / "error_vs_time.png");
+  writeImage(errorTriangleChart(results, chartedIndex, charted, title),
+             folder / "error_vs_triangles.png");
+  printResults(results, charted, chartedIndex);
+  std::printf(
+      "device medians over %zu steady frames per setting; wrote %s/{results.csv, "
+      "error_vs_time.png, error_vs_triangles.png}\n",
+      results.empty() ? size_t(0) : results.front().frames, folder.c_str());
   return finishWithValidation(*context, 0);
 }
 
@@ -93,14 +202,31 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
 CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
   auto options = std::make_shared<BenchCommandOptions>();
   CLI::App* command = app.add_subcommand(
-      "bench", "Measure frame times per shading model, tessellation and MSAA (a benchmark)");
+      "bench",
+      "Measure frame time, memory and error per shading model, tessellation and MSAA, with "
+      "charts; or z-fighting per depth mode (bench zfight)");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
-  command->add_option("-o,--output", options->output, "Folder for results.csv (created if needed)")
+  command
+      ->add_option("-o,--output", options->output,
+                   "Folder for results.csv and the charts (created if needed)")
       ->required();
-  command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
-  command->add_option("--modes", options->modes,
-                      "Shading models to measure; unlit is the constant-colour floor")
+  command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT (depth sweep: 640x360)")
+      ->capture_default_str()
+      ->each([options](const std::string&) { options->sizeGiven = true; });
+  command->add_option("--sweep", options->sweep,
+                      "settings: shading model x tessellation x MSAA (the default); depth: "
+                      "z-fighting per depth mode, projection and near plane (the default for "
+                      "the zfight scene)");
+  command
+      ->add_option("--near", options->nearPlanes,
+                   "Depth sweep: near-plane distances, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--modes", options->modes,
+                   "Shading models to measure; unlit is the constant-colour floor")
       ->capture_default_str();
   command->add_option("--tess", options->tessellations, "Tessellation factors, comma-separated")
       ->delimiter(',')
@@ -110,7 +236,23 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
-  command->add_option("--frames", options->frames, "Frames per setting and round (first tenth is warm-up)")
+  command
+      ->add_option("--filters", options->filters,
+                   "Texture filters, comma-separated: material (each material's own sampler), "
+                   "nearest, bilinear, trilinear, aniso (slow on llvmpipe)")
+      ->capture_default_str();
+  command
+      ->add_option("--reference", options->reference,
+                   "What each setting's error is measured against: raster")
+      ->capture_default_str();
+  command
+      ->add_option("--metric", options->metric,
+                   "Error metric of the charts and the Pareto front: rmse or psnr (the CSV "
+                   "has every metric)")
+      ->capture_default_str();
+  command
+      ->add_option("--frames", options->frames,
+                   "Frames per setting and round (first tenth is warm-up)")
       ->capture_default_str()
       ->check(CLI::Range(2u, 100000u));
   command->add_option("--rounds", options->rounds, "Interleaved rounds over all settings")

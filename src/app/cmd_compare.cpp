@@ -4,8 +4,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <functional>
-#include <map>
 #include <sstream>
 
 #include "app/cli_common.h"
@@ -15,6 +13,7 @@
 #include "core/metrics.h"
 #include "core/scene_loader.h"
 #include "core/sheet.h"
+#include "passes/reference.h"
 #include "passes/renderer.h"
 
 namespace shadelab {
@@ -27,28 +26,6 @@ struct CompareOptions {
   std::string modes = "flat,gouraud,phong,blinn-phong";
   std::string reference = "raster";
 };
-
-// A reference is anything that renders the scene at a size; `trace` joins
-// this table when the ray tracer lands.
-struct Reference {
-  std::string description;
-  std::function<ImageRgba(Renderer&, const Scene&, Size)> render;
-};
-
-const std::map<std::string, Reference>& references() {
-  static const std::map<std::string, Reference> table = {
-      {"raster",
-       {"Phong, 4x tessellation, 4x MSAA",
-        [](Renderer& renderer, const Scene& scene, Size size) {
-          Scene fine = scene;
-          fine.retessellate(4.0f);
-          RenderSettings settings{size.width, size.height, ShadingModel::Phong};
-          settings.msaaSamples = 4;
-          return renderer.renderToImage(fine, settings).image;
-        }}},
-  };
-  return table;
-}
 
 ImageU8 crop(const ImageU8& image, uint32_t x0, uint32_t width) {
   ImageU8 result(width, image.height);
@@ -68,9 +45,7 @@ std::string fixed(double value, int digits) {
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Size cell = parseSize(options.size, "--size");
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
-  auto reference = references().find(options.reference);
-  if (reference == references().end())
-    throw InputError("--reference '" + options.reference + "': expected raster");
+  const Reference& reference = findReference(options.reference, "--reference");
   std::filesystem::path sheetPath(options.output);
   if (sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
@@ -85,14 +60,14 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
     settings.splitModels = models;
     split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
-    expected = encodeSrgb8(reference->second.render(renderer, scene, cell));
+    expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
   }
 
-  std::vector<SheetCell> renders{{expected, "reference", {reference->second.description}}};
+  std::vector<SheetCell> renders{{expected, "reference", {reference.description}}};
   std::vector<SheetCell> heatmaps{{ImageU8(), "", {"heatmaps: |difference| x8", "black = equal"}}};
   nlohmann::json report = {{"scene", scene.name},
                            {"size", options.size},
-                           {"reference", reference->second.description},
+                           {"reference", reference.description},
                            {"modes", nlohmann::json::array()}};
   std::printf("%-12s %10s %10s %8s\n", "mode", "RMSE", "PSNR dB", "max");
   for (size_t i = 0; i < models.size(); ++i) {

@@ -2,6 +2,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "core/depth.h"
 #include "core/scene.h"
 #include "core/shading.h"
 
@@ -42,6 +43,14 @@ int runInfo(const GlobalOptions& global) {
               features.samplerAnisotropy ? "yes" : "no", properties.limits.maxSamplerAnisotropy,
               features.fillModeNonSolid ? "yes" : "no",
               features.pipelineStatisticsQuery ? "yes" : "no");
+  std::string depthModes;
+  for (DepthMode mode : kDepthModes) {
+    VkFormatProperties format;
+    vkGetPhysicalDeviceFormatProperties(context->physicalDevice(), depthFormat(mode), &format);
+    bool usable = format.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    depthModes += " " + std::string(depthModeName(mode)) + (usable ? "" : " (unsupported)");
+  }
+  std::printf("depth modes:    %s\n", depthModes.c_str());
   std::printf("timestamps:      %.3f ns per tick\n", properties.limits.timestampPeriod);
   std::printf("max image size:  %u\n", properties.limits.maxImageDimension2D);
   std::string scenes, models;

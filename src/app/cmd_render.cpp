@@ -1,5 +1,9 @@
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -8,6 +12,7 @@
 #include "core/scene_loader.h"
 #include "core/stats.h"
 #include "core/texture.h"
+#include "passes/quality.h"
 #include "passes/renderer.h"
 
 namespace shadelab {
@@ -25,6 +30,11 @@ struct RenderOptions {
   std::string filter;  // empty: each material's own sampler
   std::string bump = "on";
   bool mipTint = false;
+  std::string depth = "d32f";
+  std::optional<double> quality;  // a bound in `metric`'s units
+  std::string metric = "rmse";
+  std::string reference = "raster";
+  std::string benchFolder;  // cached bench results; empty: a quick sweep
 };
 
 TextureOptions parseTextureOptions(const RenderOptions& options) {
@@ -40,6 +50,64 @@ TextureOptions parseTextureOptions(const RenderOptions& options) {
   textures.bump = options.bump == "on";
   textures.mipTint = options.mipTint;
   return textures;
+}
+
+std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
+                                                  const ErrorMetric& metric, uint32_t msaa) {
+  std::filesystem::path csv = std::filesystem::path(folder) / "results.csv";
+  std::ifstream file(csv);
+  if (!file) throw InputError("--bench '" + folder + "': no readable results.csv in it");
+  std::stringstream text;
+  text << file.rdbuf();
+  return candidatesFromBench(parseBenchCsv(text.str(), csv.string()), csv.string(), scene.name,
+                             metric, msaa);
+}
+
+// Prints every candidate, cheapest first, and why the chosen one won;
+// throws InputError when none meets the bound.
+BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const ErrorMetric& metric,
+                               double bound, const std::string& source) {
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.costMs < b.costMs; });
+  std::optional<size_t> chosen = cheapestMeeting(candidates, metric, bound);
+  const char* relation = metric.lowerIsBetter ? "<=" : ">=";
+  std::printf("quality: %s %s %g, from %s\n", metric.name.c_str(), relation, bound, source.c_str());
+  std::printf("  %-22s %10s %10s %9s\n", "setting", "triangles", "device ms", metric.name.c_str());
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const QualityCandidate& c = candidates[i];
+    std::printf("  %-22s %10llu %10.3f %9.3f %s\n", benchPointName(c.point).c_str(),
+                static_cast<unsigned long long>(c.triangles), c.costMs, c.error,
+                chosen == i                    ? "<- chosen"
+                : metric.meets(c.error, bound) ? "meets"
+                                               : "");
+  }
+  std::fflush(stdout);  // the table before any error message on stderr
+  if (!chosen) {
+    size_t best = 0;
+    for (size_t i = 1; i < candidates.size(); ++i)
+      if (metric.badness(candidates[i].error) < metric.badness(candidates[best].error)) best = i;
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "--quality %g: no setting reaches %s %s %g; the best is %s with %s %.3f", bound,
+                  metric.name.c_str(), relation, bound,
+                  benchPointName(candidates[best].point).c_str(), metric.name.c_str(),
+                  candidates[best].error);
+    throw InputError(message);
+  }
+  const QualityCandidate& c = candidates[*chosen];
+  std::printf("chose %s: the cheapest setting with %s %s %g (%.3f ms device median, %s %.3f)\n",
+              benchPointName(c.point).c_str(), metric.name.c_str(), relation, bound, c.costMs,
+              metric.name.c_str(), c.error);
+  // Costs within a tenth of each other are within this machine's timing
+  // noise: say so, since another run may rank them the other way.
+  for (size_t i = 0; i < candidates.size(); ++i)
+    if (i != *chosen && metric.meets(candidates[i].error, bound) &&
+        candidates[i].costMs <= c.costMs * 1.1)
+      std::printf(
+          "note: %s costs within 10%% (%.3f ms), inside timing noise; pass --bench DIR "
+          "to choose from fixed measurements\n",
+          benchPointName(candidates[i].point).c_str(), candidates[i].costMs);
+  return c.point;
 }
 
 void printTimings(const RenderStats& stats) {
@@ -58,18 +126,40 @@ void printTimings(const RenderStats& stats) {
 
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
-  ShadingModel model = parseShadingModelOption(options.mode, "--mode");
+  BenchPoint point{parseShadingModelOption(options.mode, "--mode"), options.tessellation,
+                   options.msaa};
+  DepthMode depth = parseDepthModeOption(options.depth, "--depth");
+  const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
+  const Reference& reference = findReference(options.reference, "--reference");
   TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
-  if (options.tessellation != 1.0f) scene.retessellate(options.tessellation);
+  std::vector<QualityCandidate> cached;
+  if (options.quality && !options.benchFolder.empty())
+    cached = readBenchCandidates(options.benchFolder, scene, metric, options.msaa);
 
   std::unique_ptr<Context> context = openContext(global);
   RenderResult result;
   {
     Renderer renderer(*context);
-    RenderSettings settings{size.width, size.height, model, options.frames};
-    settings.msaaSamples = options.msaa;
+    if (options.quality) {
+      bool quick = options.benchFolder.empty();
+      if (quick) {
+        std::fprintf(stderr, "quality: quick sweep of 16 settings against the %s reference\n",
+                     reference.name.c_str());
+        cached = quickQualitySweep(
+            renderer, scene, reference, metric, size.width, size.height, options.msaa,
+            [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
+      }
+      point =
+          reportQualityChoice(cached, metric, *options.quality,
+                              quick ? "a quick sweep against the " + reference.name + " reference"
+                                    : options.benchFolder + "/results.csv");
+    }
+    if (point.tessellation != 1.0f) scene.retessellate(point.tessellation);
+    RenderSettings settings{size.width, size.height, point.model, options.frames};
+    settings.msaaSamples = point.msaaSamples;
+    settings.depth = depth;
     settings.environment = options.environment == "on";
     settings.textures = textures;
     result = renderer.renderToImage(scene, settings);
@@ -77,8 +167,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   writeImage(result.image, options.output);
   std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws)\n",
               options.output.c_str(), size.width, size.height, scene.name.c_str(),
-              options.mode.c_str(), static_cast<unsigned long long>(result.stats.triangles),
-              result.stats.drawCalls);
+              std::string(shadingModelName(point.model)).c_str(),
+              static_cast<unsigned long long>(result.stats.triangles), result.stats.drawCalls);
   if (options.frames > 1) printTimings(result.stats);
   return finishWithValidation(*context, 0);
 }
@@ -94,14 +184,15 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->required();
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")
       ->capture_default_str();
-  command->add_option("--mode", options->mode, "Shading model: flat, gouraud, phong, blinn-phong, "
-                      "unlit (constant colour, the timing floor)")
+  CLI::Option* mode = command->add_option(
+      "--mode", options->mode, "Shading model: flat, gouraud, phong, blinn-phong, "
+      "unlit (constant colour, the timing floor)")
       ->capture_default_str();
   command->add_option("--frames", options->frames,
                       "Frames to draw (2 in flight); above 1, prints frame-time statistics")
       ->capture_default_str()
       ->check(CLI::Range(1u, 100000u));
-  command->add_option("--tess", options->tessellation,
+  CLI::Option* tess = command->add_option("--tess", options->tessellation,
                       "Scale the tessellation of procedural shapes and Bezier patches (segments "
                       "per side x FACTOR; icosphere levels + log2 FACTOR)")
       ->capture_default_str()
@@ -124,6 +215,28 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_flag("--mip-tint", options->mipTint,
                     "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
                     "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
+  command->add_option("--depth", options->depth,
+                   "Depth buffer: d16 (D16_UNORM), d24 (X8_D24_UNORM_PACK32), d32f "
+                   "(D32_SFLOAT), reversed (D32_SFLOAT, near -> 1, far -> 0)")
+      ->capture_default_str();
+  CLI::Option* quality =
+      command
+          ->add_option("--quality", options->quality,
+                       "Render with the cheapest model and tessellation whose error meets X in "
+                       "--metric units: an RMSE ceiling, or a PSNR floor in dB")
+          ->excludes(mode)
+          ->excludes(tess);
+  command->add_option("--metric", options->metric, "Error metric of --quality: rmse or psnr")
+      ->capture_default_str()
+      ->needs(quality);
+  command->add_option("--reference", options->reference, "What --quality measures against: raster")
+      ->capture_default_str()
+      ->needs(quality);
+  command
+      ->add_option("--bench", options->benchFolder,
+                   "--quality: choose from DIR/results.csv of an earlier bench run instead of a "
+                   "quick sweep")
+      ->needs(quality);
   return [options, &global] { return runRender(*options, global); };
 }
 

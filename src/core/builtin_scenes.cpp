@@ -149,6 +149,36 @@ Scene highlightScene(uint32_t quadsPerSide) {
   return scene;
 }
 
+// Both planes are horizontal, 240 units wide, seen from 117 units away at
+// 31 degrees, so the view rays cross the gap between them over 0.07 to 0.2
+// units of depth. The far clip plane is 10,000 in both projections: a
+// perspective depth buffer spends its precision near the near plane, an
+// orthographic one spreads it evenly over near..far.
+Scene zfightScene(Projection projection, float near) {
+  Scene scene;
+  scene.name = "zfight";
+  scene.camera.eye = {0.0f, 60.0f, 100.0f};
+  scene.camera.at = {0.0f, 0.0f, 0.0f};
+  scene.camera.projection = projection;
+  scene.camera.fovyDegrees = 35.0f;
+  scene.camera.near = near;
+  scene.camera.far = 10000.0f;
+  // The orthographic view volume frames what the perspective one shows at the planes' centre.
+  scene.camera.top = 36.9f;
+  scene.camera.bottom = -36.9f;
+  scene.camera.right = 36.9f * 16.0f / 9.0f;
+  scene.camera.left = -scene.camera.right;
+  scene.ambient = glm::vec3(1.0f);
+  uint32_t sheet = scene.addShape(plane(240.0f, 16));
+  Material farMaterial{glm::vec3(0.0f), kZFightFarColor, glm::vec3(0.0f), 1.0f};
+  Material nearMaterial{glm::vec3(0.0f), kZFightNearColor, glm::vec3(0.0f), 1.0f};
+  scene.objects.push_back({"far plane", sheet, translation({0.0f, -kZFightGap, 0.0f}),
+                           farMaterial});
+  scene.objects.push_back({"near plane", sheet, glm::mat4(1.0f), nearMaterial});
+  scene.lights.push_back(directionalLight({0.0f, -1.0f, 0.0f}, glm::vec3(1.0f)));
+  return scene;
+}
+
 namespace {
 
 // The speed benchmark's dense mesh: one torus of 102,400 triangles (320 x 160
@@ -287,6 +317,7 @@ const std::map<std::string, std::function<Scene()>>& registry() {
       {"mip-plane", mipPlaneScene},
       {"spheres", spheresScene},
       {"teapot", teapotScene},
+      {"zfight", [] { return zfightScene(Projection::Perspective, 0.1f); }},
   };
   return scenes;
 }

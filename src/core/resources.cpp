@@ -1,11 +1,42 @@
 #include "core/resources.h"
 
+#include <atomic>
 #include <cstring>
 
 #include "core/context.h"
 #include "core/vk_check.h"
 
 namespace shadelab {
+namespace {
+
+std::atomic<uint64_t> memoryInUse{0};
+
+}  // namespace
+
+DeviceMemory::DeviceMemory(VkDevice device, VkDeviceMemory memory, VkDeviceSize size)
+    : handle_(device, memory), size_(size) {
+  memoryInUse.fetch_add(size);
+}
+
+DeviceMemory::DeviceMemory(DeviceMemory&& other) noexcept
+    : handle_(std::move(other.handle_)), size_(std::exchange(other.size_, 0)) {}
+
+DeviceMemory& DeviceMemory::operator=(DeviceMemory&& other) noexcept {
+  if (this != &other) {
+    reset();
+    handle_ = std::move(other.handle_);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+void DeviceMemory::reset() {
+  if (handle_) memoryInUse.fetch_sub(size_);
+  handle_.reset();
+  size_ = 0;
+}
+
+uint64_t deviceMemoryInUse() { return memoryInUse.load(); }
 
 Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage,
                MemoryUse memory)
@@ -30,7 +61,7 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
   alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits, flags);
   VkDeviceMemory deviceMemory = VK_NULL_HANDLE;
   VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &deviceMemory));
-  memory_ = DeviceMemory(device, deviceMemory);
+  memory_ = DeviceMemory(device, deviceMemory, alloc.allocationSize);
   VK_CHECK(vkBindBufferMemory(device, buffer, deviceMemory, 0));
   if (memory == MemoryUse::HostVisible) {
     VK_CHECK(vkMapMemory(device, deviceMemory, 0, VK_WHOLE_SIZE, 0, &mapped_));
@@ -65,7 +96,7 @@ Image::Image(const Context& context, const ImageDesc& desc) : desc_(desc) {
       context.findMemoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   VkDeviceMemory deviceMemory = VK_NULL_HANDLE;
   VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &deviceMemory));
-  memory_ = DeviceMemory(device, deviceMemory);
+  memory_ = DeviceMemory(device, deviceMemory, alloc.allocationSize);
   VK_CHECK(vkBindImageMemory(device, image, deviceMemory, 0));
 
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};

@@ -55,9 +55,29 @@ using CommandPool = DeviceHandle<VkCommandPool, vkDestroyCommandPool>;
 using Fence = DeviceHandle<VkFence, vkDestroyFence>;
 using Semaphore = DeviceHandle<VkSemaphore, vkDestroySemaphore>;
 using QueryPool = DeviceHandle<VkQueryPool, vkDestroyQueryPool>;
-using DeviceMemory = DeviceHandle<VkDeviceMemory, vkFreeMemory>;
 using BufferHandle = DeviceHandle<VkBuffer, vkDestroyBuffer>;
 using ImageHandle = DeviceHandle<VkImage, vkDestroyImage>;
+
+// Device memory that counts itself into deviceMemoryInUse() while it lives,
+// so the benchmark can report what each setting allocates.
+class DeviceMemory {
+ public:
+  DeviceMemory() = default;
+  DeviceMemory(VkDevice device, VkDeviceMemory memory, VkDeviceSize size);
+  ~DeviceMemory() { reset(); }
+  DeviceMemory(DeviceMemory&& other) noexcept;
+  DeviceMemory& operator=(DeviceMemory&& other) noexcept;
+  VkDeviceMemory get() const { return handle_.get(); }
+  operator VkDeviceMemory() const { return handle_.get(); }
+  void reset();
+
+ private:
+  DeviceHandle<VkDeviceMemory, vkFreeMemory> handle_;
+  VkDeviceSize size_ = 0;
+};
+
+// Bytes allocated now, by every DeviceMemory of the process.
+uint64_t deviceMemoryInUse();
 
 enum class MemoryUse {
   DeviceLocal,  // written by transfers, read by the device

@@ -6,14 +6,17 @@ namespace shadelab {
 
 glm::mat4 Camera::viewMatrix() const { return lookAt(eye, at, up); }
 
-glm::mat4 Camera::projectionMatrix(float aspect) const {
+glm::mat4 Camera::projectionMatrix(float aspect, bool reversedZ) const {
   switch (projection) {
     case Projection::Perspective:
-      return perspective(glm::radians(fovyDegrees), aspect, near, far);
+      return reversedZ ? perspectiveReversedZ(glm::radians(fovyDegrees), aspect, near, far)
+                       : perspective(glm::radians(fovyDegrees), aspect, near, far);
     case Projection::Frustum:
-      return frustum(left, right, bottom, top, near, far);
+      return reversedZ ? frustumReversedZ(left, right, bottom, top, near, far)
+                       : frustum(left, right, bottom, top, near, far);
     case Projection::Orthographic:
-      return orthographic(left, right, bottom, top, near, far);
+      return reversedZ ? orthographicReversedZ(left, right, bottom, top, near, far)
+                       : orthographic(left, right, bottom, top, near, far);
   }
   return glm::mat4(1.0f);
 }

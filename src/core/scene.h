@@ -28,8 +28,8 @@ struct Camera {
 
   glm::mat4 viewMatrix() const;
   // Vulkan clip space (y down, depth 0..1); `aspect` is width / height and
-  // applies to the perspective projection only.
-  glm::mat4 projectionMatrix(float aspect) const;
+  // applies to the perspective projection only. reversedZ maps near to 1, far to 0.
+  glm::mat4 projectionMatrix(float aspect, bool reversedZ = false) const;
 };
 
 enum class LightType { Point, Directional };
@@ -128,5 +128,13 @@ Scene builtinScene(const std::string& name);
 std::vector<std::string> builtinSceneNames();
 // The `highlight` scene with its plane cut into quadsPerSide^2 quads.
 Scene highlightScene(uint32_t quadsPerSide);
+// The `zfight` scene: two large parallel planes kZFightGap apart, far from a
+// camera with this projection and near plane (the built-in one: perspective,
+// near 0.1). Unlit colours: the nearer plane kZFightNearColor, the farther
+// kZFightFarColor, listed first; black background.
+inline constexpr float kZFightGap = 0.05f;
+inline constexpr glm::vec3 kZFightNearColor{1.0f, 0.0f, 0.0f};
+inline constexpr glm::vec3 kZFightFarColor{0.0f, 0.0f, 1.0f};
+Scene zfightScene(Projection projection, float near);
 
 }  // namespace shadelab

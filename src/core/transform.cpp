@@ -192,6 +192,23 @@ glm::mat4 perspectiveReversedZ(float fovy, float aspect, float zNear, float zFar
                     {0, 0, -1, 0});
 }
 
+glm::mat4 reverseDepth() {
+    return fromRows({1, 0, 0, 0},
+                    {0, 1, 0, 0},
+                    {0, 0, -1, 1},
+                    {0, 0, 0, 1});
+}
+
+glm::mat4 frustumReversedZ(float left, float right, float bottom, float top, float zNear,
+                           float zFar) {
+    return reverseDepth() * frustum(left, right, bottom, top, zNear, zFar);
+}
+
+glm::mat4 orthographicReversedZ(float left, float right, float bottom, float top, float zNear,
+                                float zFar) {
+    return reverseDepth() * orthographic(left, right, bottom, top, zNear, zFar);
+}
+
 glm::vec3 viewportTransform(glm::vec3 ndc, const Viewport& vp) {
     return {vp.x + vp.width / 2 * (ndc.x + 1),
             vp.y + vp.height / 2 * (ndc.y + 1),

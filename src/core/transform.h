@@ -55,6 +55,13 @@ glm::mat4 orthographic(float left, float right, float bottom, float top, float z
 // Reversed-Z perspective for float depth buffers (near -> 1, far -> 0), Vulkan conventions,
 // finite far plane.
 glm::mat4 perspectiveReversedZ(float fovy, float aspect, float zNear, float zFar);
+// Reverses depth after any Vulkan projection: rows [1,0,0,0], [0,1,0,0], [0,0,-1,1], [0,0,0,1],
+// so z' = w - z and NDC depth d becomes 1 - d (near -> 1, far -> 0).
+glm::mat4 reverseDepth();
+glm::mat4 frustumReversedZ(float left, float right, float bottom, float top, float zNear,
+                           float zFar);
+glm::mat4 orthographicReversedZ(float left, float right, float bottom, float top, float zNear,
+                                float zFar);
 
 // Viewport mapping, Vulkan spec 'Coordinate Transformations': NDC -> framebuffer coordinates.
 struct Viewport {

@@ -10,8 +10,8 @@
 
 namespace shadelab {
 
-ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& formats)
-    : context_(context), formats_(formats) {
+ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
+    : context_(context), colorFormat_(colorFormat) {
   VkDevice device = context.device();
   VkDescriptorSetLayoutBinding bindings[] = {
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
@@ -61,18 +61,17 @@ ForwardPass::ForwardPass(const Context& context, const AttachmentFormats& format
   texturedFragment_ = loadShader(device, "forward_textured.frag");
 }
 
-void ForwardPass::prepare(LightLayout lights, uint32_t samples, bool textured,
+void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured,
                           bool environment) {
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool variant : {false, true}) {
-      VariantKey key{ShadingModel(model), lights, samples, variant, environment};
+      VariantKey key{ShadingModel(model), lights, target, variant, environment};
       if ((!variant || textured) && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
     }
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, samples, textured, environment] = key;
-  const AttachmentFormats& formats = formats_;
+  const auto& [model, lights, target, textured, environment] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -143,12 +142,12 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VkSampleCountFlagBits(samples);
+  multisample.rasterizationSamples = VkSampleCountFlagBits(target.samples);
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
   depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  depth.depthCompareOp = depthCompareOp(target.depth);
   VkPipelineColorBlendAttachmentState blendAttachment{};
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
@@ -162,8 +161,8 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &formats.color;
-  rendering.depthAttachmentFormat = formats.depth;
+  rendering.pColorAttachmentFormats = &colorFormat_;
+  rendering.depthAttachmentFormat = depthFormat(target.depth);
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
   info.stageCount = uint32_t(stages.size());
@@ -183,15 +182,15 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   return Pipeline(context_.device(), pipeline);
 }
 
-void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples,
+void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
                          VkDescriptorSet frameSet, const GpuScene& scene,
                          const VkViewport& viewport, bool environment) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto plain = pipelines_.find({model, scene.lights, samples, false, environment});
-  auto textured = pipelines_.find({model, scene.lights, samples, true, environment});
+  auto plain = pipelines_.find({model, scene.lights, target, false, environment});
+  auto textured = pipelines_.find({model, scene.lights, target, true, environment});
   assert(plain != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, plain->second);
   bool texturedBound = false;

@@ -11,39 +11,44 @@
 #include <tuple>
 
 #include "core/context.h"
+#include "core/depth.h"
 #include "core/gpu_scene.h"
 #include "core/resources.h"
 #include "core/shading.h"
 
 namespace shadelab {
 
-struct AttachmentFormats {
-  VkFormat color = VK_FORMAT_R16G16B16A16_SFLOAT;
-  VkFormat depth = VK_FORMAT_D32_SFLOAT;
+// What a pipeline must match in the render target: sample count and depth
+// mode (format, compare op).
+struct TargetLayout {
+  uint32_t samples = 1;
+  DepthMode depth = DepthMode::D32F;
+  auto operator<=>(const TargetLayout&) const = default;
 };
 
 class ForwardPass {
  public:
-  ForwardPass(const Context& context, const AttachmentFormats& formats);
+  ForwardPass(const Context& context, VkFormat colorFormat);
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
   VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_.get(); }
   // Builds the pipelines of every shading model for a scene's light layout
-  // (specialization constants) and a sample count, before any frame records
+  // (specialization constants) and a target layout, before any frame records
   // with them; `textured` adds the textured variants, `environment` selects
   // the variants with the environment term.
-  void prepare(LightLayout lights, uint32_t samples, bool textured, bool environment = false);
+  void prepare(LightLayout lights, TargetLayout target, bool textured, bool environment = false);
   // Records inside an active dynamic-rendering scope; sets its own viewport.
-  void record(VkCommandBuffer cmd, ShadingModel model, uint32_t samples, VkDescriptorSet frameSet,
-              const GpuScene& scene, const VkViewport& viewport, bool environment = false) const;
+  void record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
+              VkDescriptorSet frameSet, const GpuScene& scene, const VkViewport& viewport,
+              bool environment = false) const;
 
  private:
-  // model, lights, samples, textured, environment term
-  using VariantKey = std::tuple<ShadingModel, LightLayout, uint32_t, bool, bool>;
+  // model, lights, target (samples, depth), textured, environment term
+  using VariantKey = std::tuple<ShadingModel, LightLayout, TargetLayout, bool, bool>;
   Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;
-  AttachmentFormats formats_;
+  VkFormat colorFormat_;
   DescriptorSetLayout setLayout_;
   DescriptorSetLayout materialSetLayout_;
   PipelineLayout layout_;

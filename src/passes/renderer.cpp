@@ -33,9 +33,9 @@ ImageRgba unpackHalfPixels(const void* data, uint32_t width, uint32_t height) {
 
 Renderer::Renderer(const Context& context)
     : context_(context),
-      forward_(context, {kColorFormat, kDepthFormat}),
+      forward_(context, kColorFormat),
       textures_(context, forward_.materialSetLayout()),
-      skybox_(context, {kColorFormat, kDepthFormat}, forward_.descriptorSetLayout()),
+      skybox_(context, kColorFormat, forward_.descriptorSetLayout()),
       environmentBuilder_(context),
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
@@ -137,16 +137,26 @@ void Renderer::ensureObjectCapacity(Frame& frame, uint32_t count) {
   vkUpdateDescriptorSets(context_.device(), 2, writes, 0, nullptr);
 }
 
-void Renderer::ensureTarget(uint32_t width, uint32_t height, uint32_t samples) {
+void Renderer::checkDepthSupport(DepthMode mode) const {
+  VkFormatProperties properties;
+  vkGetPhysicalDeviceFormatProperties(context_.physicalDevice(), depthFormat(mode), &properties);
+  if (!(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
+    throw InputError("depth '" + std::string(depthModeName(mode)) + "': this device (" +
+                     context_.properties().deviceName + ") cannot render to " +
+                     std::string(depthFormatName(mode)) + " depth; choose another --depth");
+}
+
+void Renderer::ensureTarget(uint32_t width, uint32_t height, TargetLayout layout) {
   if (target_.color && target_.color.desc().width == width &&
-      target_.color.desc().height == height && target_.samples == samples)
+      target_.color.desc().height == height && target_.layout == layout)
     return;
   target_ = Target{};
-  target_.samples = samples;
+  target_.layout = layout;
+  uint32_t samples = layout.samples;
   ImageDesc color{kColorFormat, width, height};
   color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   target_.color = Image(context_, color);
-  ImageDesc depth{kDepthFormat, width, height};
+  ImageDesc depth{depthFormat(layout.depth), width, height};
   depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
   depth.samples = VkSampleCountFlagBits(samples);
@@ -183,7 +193,7 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
                ImageUse::DepthAttachment);
   target_.colorUse = ImageUse::ColorAttachment;
   target_.depthUse = ImageUse::DepthAttachment;
-  bool multisampled = target_.samples > 1;
+  bool multisampled = target_.layout.samples > 1;
   if (multisampled) {
     imageBarrier(cmd, target_.multisampled.get(), VK_IMAGE_ASPECT_COLOR_BIT,
                  target_.multisampledUse, ImageUse::ColorAttachment);
@@ -206,7 +216,7 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {kClearDepth, 0};
+  depth.clearValue.depthStencil = {depthClearValue(target_.layout.depth), 0};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, {width, height}};
   rendering.layerCount = 1;
@@ -223,7 +233,7 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
   glm::mat4 view = source.camera.viewMatrix();
   float viewAspect = float(width) / float(std::max<size_t>(1, settings.splitModels.size())) /
                      float(height);
-  glm::mat4 projection = source.camera.projectionMatrix(viewAspect);
+  glm::mat4 projection = source.camera.projectionMatrix(viewAspect, isReversedZ(settings.depth));
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
@@ -247,9 +257,9 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
     float left = std::floor(columnWidth * float(i));
     float right = std::floor(columnWidth * float(i + 1));
     VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
-    forward_.record(cmd, models[i], target_.samples, frame.set, scene, viewport, environment);
+    forward_.record(cmd, models[i], target_.layout, frame.set, scene, viewport, environment);
     if (environment)
-      skybox_.record(cmd, target_.samples, frame.set, view, projection, kClearDepth, viewport);
+      skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
@@ -291,21 +301,25 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   if (settings.splitModels.size() > settings.width)
     throw InputError("split screen: more views than pixel columns");
 
+  checkDepthSupport(settings.depth);
+
   GpuScene gpuScene = uploadScene(context_, scene);
   textures_.upload(scene, gpuScene, settings.textures);
   bool textured = std::any_of(gpuScene.draws.begin(), gpuScene.draws.end(),
                               [](const DrawItem& draw) { return draw.textured; });
   bindEnvironment(scene, settings.environment);
   bool environment = bool(sceneEnvironment_);
-  forward_.prepare(gpuScene.lights, settings.msaaSamples, textured, environment);
-  if (environment) skybox_.prepare(settings.msaaSamples);
-  ensureTarget(settings.width, settings.height, settings.msaaSamples);
+  TargetLayout layout{settings.msaaSamples, settings.depth};
+  forward_.prepare(gpuScene.lights, layout, textured, environment);
+  if (environment) skybox_.prepare(layout);
+  ensureTarget(settings.width, settings.height, layout);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 
   RenderResult result;
   result.stats.triangles = gpuScene.triangles;
   result.stats.drawCalls = uint32_t(gpuScene.draws.size());
+  result.stats.deviceMemoryBytes = deviceMemoryInUse();
   double lastCompletion = nowMs();
   for (uint32_t i = 0; i < settings.frames; ++i) {
     Frame& frame = frames_[i % kFramesInFlight];

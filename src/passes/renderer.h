@@ -31,6 +31,7 @@ struct RenderSettings {
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
   TextureOptions textures;  // --filter override, --bump, --mip-tint
+  DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
   // --env: with a scene environment, the environment term and the skybox;
   // off (or a scene without one) renders with the background colour only.
   bool environment = true;
@@ -41,6 +42,9 @@ struct RenderStats {
   std::vector<double> wallMs;    // per frame, interval between successive frame completions
   uint64_t triangles = 0;        // submitted per frame
   uint32_t drawCalls = 0;
+  // Device memory allocated in the process while the frames ran (target,
+  // meshes, per-frame buffers, readback), from resources.h's accounting.
+  uint64_t deviceMemoryBytes = 0;
 };
 
 struct RenderResult {
@@ -52,8 +56,6 @@ class Renderer {
  public:
   static constexpr uint32_t kFramesInFlight = 2;
   static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // linear, HDR
-  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-  static constexpr float kClearDepth = 1.0f;  // the far plane; the skybox fills what stays there
 
   explicit Renderer(const Context& context);
   ~Renderer();
@@ -82,12 +84,14 @@ class Renderer {
     ImageUse colorUse = ImageUse::Undefined;
     ImageUse depthUse = ImageUse::Undefined;
     ImageUse multisampledUse = ImageUse::Undefined;
-    uint32_t samples = 1;
+    TargetLayout layout;
   };
 
   void createFrame(Frame& frame);
   void ensureObjectCapacity(Frame& frame, uint32_t count);
-  void ensureTarget(uint32_t width, uint32_t height, uint32_t samples);
+  // Throws InputError when the device cannot use the depth format as an attachment.
+  void checkDepthSupport(DepthMode mode) const;
+  void ensureTarget(uint32_t width, uint32_t height, TargetLayout layout);
   void beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width, uint32_t height);
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
@@ -105,7 +109,7 @@ class Renderer {
   SkyboxPass skybox_;
   EnvironmentBuilder environmentBuilder_;
   EnvironmentCube placeholderEnvironment_;
-  EnvironmentCube sceneEnvironment_;  // empty when the scene has none or it is off
+  EnvironmentCube sceneEnvironment_;    // empty when the scene has none or it is off
   Environment sceneEnvironmentSource_;  // what sceneEnvironment_ was built from
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;

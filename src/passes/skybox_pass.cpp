@@ -2,15 +2,16 @@
 
 #include <cassert>
 
+#include "core/depth.h"
 #include "core/shader.h"
 #include "core/vk_check.h"
 #include "interface.h"
 
 namespace shadelab {
 
-SkyboxPass::SkyboxPass(const Context& context, const AttachmentFormats& formats,
+SkyboxPass::SkyboxPass(const Context& context, VkFormat colorFormat,
                        VkDescriptorSetLayout frameSetLayout)
-    : context_(context), formats_(formats) {
+    : context_(context), colorFormat_(colorFormat) {
   VkDevice device = context.device();
   VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                            sizeof(gpu::SkyboxConstants)};
@@ -26,11 +27,11 @@ SkyboxPass::SkyboxPass(const Context& context, const AttachmentFormats& formats,
   fragment_ = loadShader(device, "skybox.frag");
 }
 
-void SkyboxPass::prepare(uint32_t samples) {
-  if (!pipelines_.count(samples)) pipelines_[samples] = createPipeline(samples);
+void SkyboxPass::prepare(TargetLayout target) {
+  if (!pipelines_.count(target)) pipelines_[target] = createPipeline(target);
 }
 
-Pipeline SkyboxPass::createPipeline(uint32_t samples) const {
+Pipeline SkyboxPass::createPipeline(TargetLayout target) const {
   VkPipelineShaderStageCreateInfo stages[2] = {
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
@@ -55,7 +56,7 @@ Pipeline SkyboxPass::createPipeline(uint32_t samples) const {
   raster.lineWidth = 1.0f;
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VkSampleCountFlagBits(samples);
+  multisample.rasterizationSamples = VkSampleCountFlagBits(target.samples);
   // Exactly the cleared value: the triangle's depth is that constant.
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
@@ -75,8 +76,8 @@ Pipeline SkyboxPass::createPipeline(uint32_t samples) const {
   dynamic.pDynamicStates = dynamicStates;
   VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &formats_.color;
-  rendering.depthAttachmentFormat = formats_.depth;
+  rendering.pColorAttachmentFormats = &colorFormat_;
+  rendering.depthAttachmentFormat = depthFormat(target.depth);
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
   info.stageCount = 2;
@@ -96,11 +97,11 @@ Pipeline SkyboxPass::createPipeline(uint32_t samples) const {
   return Pipeline(context_.device(), pipeline);
 }
 
-void SkyboxPass::record(VkCommandBuffer cmd, uint32_t samples, VkDescriptorSet frameSet,
-                        const glm::mat4& view, const glm::mat4& projection, float clearedDepth,
+void SkyboxPass::record(VkCommandBuffer cmd, TargetLayout target, VkDescriptorSet frameSet,
+                        const glm::mat4& view, const glm::mat4& projection,
                         const VkViewport& viewport) const {
-  auto pipeline = pipelines_.find(samples);
-  assert(pipeline != pipelines_.end() && "SkyboxPass::prepare() not called for this sample count");
+  auto pipeline = pipelines_.find(target);
+  assert(pipeline != pipelines_.end() && "SkyboxPass::prepare() not called for this target");
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
@@ -111,7 +112,8 @@ void SkyboxPass::record(VkCommandBuffer cmd, uint32_t samples, VkDescriptorSet f
   gpu::SkyboxConstants constants{};
   // Without the translation the camera sits at the origin: the environment is at infinity.
   constants.clipToWorld = glm::inverse(projection * glm::mat4(glm::mat3(view)));
-  constants.depth = glm::vec4(clearedDepth, 0.0f, 0.0f, 0.0f);
+  float nearDepth = isReversedZ(target.depth) ? 1.0f : 0.0f;
+  constants.depth = glm::vec4(depthClearValue(target.depth), nearDepth, 0.0f, 0.0f);
   vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(constants), &constants);
   vkCmdDraw(cmd, 3, 1, 0, 0);

@@ -15,23 +15,22 @@ namespace shadelab {
 
 class SkyboxPass {
  public:
-  SkyboxPass(const Context& context, const AttachmentFormats& formats,
-             VkDescriptorSetLayout frameSetLayout);
-  void prepare(uint32_t samples);
-  // `view` and `projection` are the camera's; only the view's rotation is used.
-  void record(VkCommandBuffer cmd, uint32_t samples, VkDescriptorSet frameSet,
-              const glm::mat4& view, const glm::mat4& projection, float clearedDepth,
-              const VkViewport& viewport) const;
+  SkyboxPass(const Context& context, VkFormat colorFormat, VkDescriptorSetLayout frameSetLayout);
+  void prepare(TargetLayout target);
+  // `view` and `projection` are the camera's (reversed-Z included); only the
+  // view's rotation is used. The depth mode gives the far plane's depth.
+  void record(VkCommandBuffer cmd, TargetLayout target, VkDescriptorSet frameSet,
+              const glm::mat4& view, const glm::mat4& projection, const VkViewport& viewport) const;
 
  private:
-  Pipeline createPipeline(uint32_t samples) const;
+  Pipeline createPipeline(TargetLayout target) const;
 
   const Context& context_;
-  AttachmentFormats formats_;
+  VkFormat colorFormat_;
   PipelineLayout layout_;
   ShaderModule vertex_;
   ShaderModule fragment_;
-  std::map<uint32_t, Pipeline> pipelines_;  // by sample count
+  std::map<TargetLayout, Pipeline> pipelines_;
 };
 
 }  // namespace shadelab

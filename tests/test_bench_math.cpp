@@ -1,0 +1,177 @@
+// The benchmark's CPU-side logic on known inputs: the Pareto front, axis
+// ticks and charts, bench CSV round trips, the --quality choice, error
+// metrics and depth-mode names.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/chart.h"
+#include "core/depth.h"
+#include "core/error_metric.h"
+#include "core/errors.h"
+#include "core/pareto.h"
+#include "passes/benchmark.h"
+#include "passes/quality.h"
+
+namespace shadelab {
+namespace {
+
+TEST(ParetoFront, KeepsOnlyTheUndominatedPointsByIncreasingCost) {
+  // (cost, error): 0 and 2 and 4 form the front; 1 is beaten by 0, 3 by 2, 5 by 4.
+  std::vector<CostError> points = {{1, 10}, {2, 12}, {3, 5}, {4, 5}, {6, 1}, {7, 1}};
+  EXPECT_EQ(paretoFront(points), (std::vector<size_t>{0, 2, 4}));
+}
+
+TEST(ParetoFront, OrderOfInputDoesNotMatterAndTiesKeepTheFirst) {
+  std::vector<CostError> points = {{6, 1}, {3, 5}, {1, 10}, {3, 5}, {3, 4}};
+  // Equal cost: the smaller error wins (index 4 over 1 and 3); sorted by cost.
+  EXPECT_EQ(paretoFront(points), (std::vector<size_t>{2, 4, 0}));
+  EXPECT_EQ(paretoFront({{2, 2}, {2, 2}}), (std::vector<size_t>{0}));
+  EXPECT_TRUE(paretoFront({}).empty());
+}
+
+TEST(ParetoFront, AMonotoneTradeOffIsAllFront) {
+  std::vector<CostError> points;
+  for (int i = 0; i < 6; ++i) points.push_back({double(i), 10.0 - i});
+  EXPECT_EQ(paretoFront(points).size(), 6u);
+}
+
+TEST(AxisTicks, LinearStepsOfOneTwoOrFive) {
+  EXPECT_EQ(axisTicks(0, 7, AxisScale::Linear), (std::vector<double>{0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_EQ(axisTicks(0, 100, AxisScale::Linear), (std::vector<double>{0, 20, 40, 60, 80, 100}));
+  EXPECT_EQ(axisTicks(0, 0.5, AxisScale::Linear).size(), 6u);  // 0, 0.1 .. 0.5
+}
+
+TEST(AxisTicks, LogDecadesWithTwoAndFiveWhenFew) {
+  EXPECT_EQ(axisTicks(0.001, 10, AxisScale::Log), (std::vector<double>{0.001, 0.01, 0.1, 1, 10}));
+  std::vector<double> fine = axisTicks(1, 100, AxisScale::Log);
+  ASSERT_EQ(fine.size(), 7u);
+  EXPECT_DOUBLE_EQ(fine[1], 2.0);
+  EXPECT_DOUBLE_EQ(fine[5], 50.0);
+}
+
+size_t pixelsOfColor(const ImageU8& image, glm::vec3 color) {
+  glm::u8vec4 wanted(glm::round(color * 255.0f), 255);
+  size_t count = 0;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) count += image.at(x, y) == wanted;
+  return count;
+}
+
+TEST(Chart, DrawsEachSeriesInItsColourOnWhitePaper) {
+  Chart chart{"title", "subtitle", {"x"}, {"y"}};
+  chart.series.push_back({"a", glm::vec3(1, 0, 0), {{1, 1, "one"}, {2, 3, "two"}}, true});
+  chart.series.push_back({"b", glm::vec3(0, 0, 1), {{1.5, 2, ""}}});
+  ImageU8 image = drawChart(chart, 600, 400);
+  ASSERT_EQ(image.width, 600u);
+  EXPECT_GT(pixelsOfColor(image, glm::vec3(1)), size_t(600 * 400 / 2));  // mostly paper
+  EXPECT_GT(pixelsOfColor(image, glm::vec3(1, 0, 0)), 100u);             // line and two dots
+  EXPECT_GT(pixelsOfColor(image, glm::vec3(0, 0, 1)), 40u);              // a dot and its legend
+  // Without series b no pixel is blue: the colour came from it.
+  Chart without = chart;
+  without.series.pop_back();
+  EXPECT_LT(pixelsOfColor(drawChart(without, 600, 400), glm::vec3(0, 0, 1)), 1u);
+}
+
+TEST(BenchCsv, ParsesColumnsAndRowsAndRejectsRaggedLines) {
+  BenchTable table = parseBenchCsv("a,b,c\n1,2,3\n4,5,\n", "t.csv");
+  EXPECT_EQ(table.columns, (std::vector<std::string>{"a", "b", "c"}));
+  ASSERT_EQ(table.rows.size(), 2u);
+  EXPECT_EQ(table.rows[1][2], "");
+  EXPECT_EQ(table.column("b", "t.csv"), 1u);
+  EXPECT_THROW(table.column("z", "t.csv"), InputError);
+  EXPECT_THROW(parseBenchCsv("a,b\n1\n", "t.csv"), InputError);
+  EXPECT_THROW(parseBenchCsv("", "t.csv"), InputError);
+}
+
+TEST(BenchCsv, WritesOneRowPerResultWithEveryMetric) {
+  BenchOptions options{64, 36, 4, 1, {"raster", "", {}}, errorMetrics()};
+  BenchResult result;
+  result.point = {ShadingModel::Gouraud, 2.0f, 4};
+  result.triangles = 80;
+  result.errors = {1.5, 44.6};
+  BenchTable table = parseBenchCsv(benchCsv({result}, options, "spheres"), "out");
+  ASSERT_EQ(table.rows.size(), 1u);
+  const auto& row = table.rows[0];
+  EXPECT_EQ(row[table.column("mode", "out")], "gouraud");
+  EXPECT_EQ(row[table.column("tessellation", "out")], "2");
+  EXPECT_EQ(row[table.column("msaa", "out")], "4");
+  EXPECT_EQ(row[table.column("rmse", "out")], "1.5");
+  EXPECT_EQ(row[table.column("psnr", "out")], "44.6");
+  EXPECT_EQ(row[table.column("reference", "out")], "raster");
+}
+
+std::vector<QualityCandidate> candidates() {
+  // cost rises as error falls, except blinn-phong t1, dearer and worse than gouraud t2.
+  return {{{ShadingModel::Flat, 0.5f, 1}, 100, 1.0, 6.0},
+          {{ShadingModel::Gouraud, 1.0f, 1}, 400, 2.0, 3.0},
+          {{ShadingModel::BlinnPhong, 1.0f, 1}, 400, 3.5, 3.5},
+          {{ShadingModel::Gouraud, 2.0f, 1}, 1600, 3.0, 2.0},
+          {{ShadingModel::Phong, 4.0f, 1}, 6400, 9.0, 0.5}};
+}
+
+TEST(QualityChoice, LooseBoundTakesTheCheapestTightOnlyTheBest) {
+  const ErrorMetric& rmse = findErrorMetric("rmse", "--metric");
+  EXPECT_EQ(cheapestMeeting(candidates(), rmse, 100.0), 0u);
+  EXPECT_EQ(cheapestMeeting(candidates(), rmse, 3.2), 1u);
+  EXPECT_EQ(cheapestMeeting(candidates(), rmse, 2.0), 3u);  // the bound itself meets
+  EXPECT_EQ(cheapestMeeting(candidates(), rmse, 0.5), 4u);
+  EXPECT_FALSE(cheapestMeeting(candidates(), rmse, 0.1).has_value());
+}
+
+TEST(QualityChoice, PsnrIsAFloorNotACeiling) {
+  const ErrorMetric& psnr = findErrorMetric("psnr", "--metric");
+  std::vector<QualityCandidate> scored = candidates();
+  for (QualityCandidate& c : scored) c.error = 50.0 - c.error;  // higher is better now
+  EXPECT_EQ(cheapestMeeting(scored, psnr, 47.5), 3u);
+  EXPECT_EQ(cheapestMeeting(scored, psnr, 0.0), 0u);
+  EXPECT_TRUE(psnr.meets(40.0, 35.0));
+  EXPECT_FALSE(psnr.meets(30.0, 35.0));
+  EXPECT_THROW(findErrorMetric("ssim-ish", "--metric"), InputError);
+}
+
+TEST(QualityChoice, CandidatesFromBenchKeepTheSceneSampleCountAndLitModels) {
+  std::string csv =
+      "scene,mode,tessellation,msaa,triangles,device_median_ms,rmse\n"
+      "spheres,unlit,1,1,10,0.5,30\n"
+      "spheres,flat,1,1,10,1.0,5\n"
+      "spheres,phong,2,4,40,4.0,1\n"
+      "teapot,gouraud,1,1,10,0.7,2\n"
+      "spheres,gouraud,2,1,40,2.0,\n";
+  BenchTable table = parseBenchCsv(csv, "r.csv");
+  const ErrorMetric& rmse = findErrorMetric("rmse", "--metric");
+  std::vector<QualityCandidate> found = candidatesFromBench(table, "r.csv", "spheres", rmse, 1);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].point.model, ShadingModel::Flat);
+  EXPECT_DOUBLE_EQ(found[0].costMs, 1.0);
+  EXPECT_THROW(candidatesFromBench(table, "r.csv", "default", rmse, 1), InputError);
+  EXPECT_THROW(candidatesFromBench(table, "r.csv", "spheres", findErrorMetric("psnr", "m"), 1),
+               InputError);
+}
+
+TEST(QualityChoice, RowsOverridingTheTextureFilterAreNotCandidates) {
+  BenchTable table = parseBenchCsv(
+      "scene,mode,tessellation,msaa,filter,triangles,device_median_ms,rmse\n"
+      "spheres,flat,1,1,nearest,10,0.5,5\n"
+      "spheres,flat,1,1,material,10,1.0,4\n",
+      "r.csv");
+  std::vector<QualityCandidate> found =
+      candidatesFromBench(table, "r.csv", "spheres", findErrorMetric("rmse", "m"), 1);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_DOUBLE_EQ(found[0].costMs, 1.0);
+}
+
+TEST(DepthModes, NamesFormatsAndReversedZState) {
+  EXPECT_EQ(depthModeNames(), (std::vector<std::string>{"d16", "d24", "d32f", "reversed"}));
+  EXPECT_EQ(parseDepthMode("reversed"), DepthMode::ReversedZ);
+  EXPECT_FALSE(parseDepthMode("d8").has_value());
+  EXPECT_EQ(depthFormat(DepthMode::D24), VK_FORMAT_X8_D24_UNORM_PACK32);
+  EXPECT_EQ(depthFormat(DepthMode::ReversedZ), VK_FORMAT_D32_SFLOAT);
+  EXPECT_EQ(depthClearValue(DepthMode::ReversedZ), 0.0f);
+  EXPECT_EQ(depthClearValue(DepthMode::D16), 1.0f);
+  EXPECT_EQ(depthCompareOp(DepthMode::ReversedZ), VK_COMPARE_OP_GREATER_OR_EQUAL);
+  EXPECT_EQ(depthCompareOp(DepthMode::D32F), VK_COMPARE_OP_LESS);
+}
+
+}  // namespace
+}  // namespace shadelab
