@@ -148,6 +148,11 @@ TEST(CubeMap, AutomaticResolution) {
   EXPECT_EQ(cubeResolution(panorama), 256u);  // 250 rounded up to a power of two
   panorama.panorama = std::make_shared<const ImageRgba>(64, 32);
   EXPECT_EQ(cubeResolution(panorama), 64u);
+  Environment faces;
+  faces.kind = EnvironmentKind::CubeFaces;
+  faces.faces[0] = std::make_shared<const ImageRgba>(24, 24);
+  faces.resolution = 64;  // faces are never resampled: their size wins
+  EXPECT_EQ(cubeResolution(faces), 24u);
 }
 
 TEST(Panorama, CentreLooksAlongMinusZAndTopIsUp) {

@@ -46,16 +46,16 @@ bool SkyDesc::operator==(const SkyDesc& other) const {
 }
 
 uint32_t cubeResolution(const Environment& environment) {
-  if (environment.resolution > 0) return environment.resolution;
   switch (environment.kind) {
-    case EnvironmentKind::CubeFaces:
+    case EnvironmentKind::CubeFaces:  // uploaded as they are, never resampled
       return environment.faces[0] ? environment.faces[0]->width : 1;
     case EnvironmentKind::Panorama: {
+      if (environment.resolution > 0) return environment.resolution;
       uint32_t quarter = std::max(1u, (environment.panorama->width + 3) / 4);
       return std::clamp(std::bit_ceil(quarter), 64u, 2048u);
     }
     case EnvironmentKind::Sky:
-      return 512;
+      return environment.resolution > 0 ? environment.resolution : 512;
     case EnvironmentKind::None:
       return 1;
   }

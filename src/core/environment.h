@@ -55,8 +55,8 @@ struct Environment {
   bool operator==(const Environment&) const = default;
 };
 
-// The face size the cube map gets: `resolution` if set; else the faces' own
-// size, a panorama's width / 4 rounded up to a power of two (one cube texel
+// The face size the cube map gets: the faces' own size; else `resolution`
+// if set; else a panorama's width / 4 rounded up to a power of two (one cube texel
 // per panorama texel at a face centre) in 64..2048, or 512 for the sky
 // (its sun's edge is HDR: sharper than a bilinear 256 face shows smoothly).
 uint32_t cubeResolution(const Environment& environment);
