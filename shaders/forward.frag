@@ -40,5 +40,7 @@ void main() {
       environment = environmentDirections(inPosition, inNormal, draw.optics.z);
     color += environmentColor(environment, draw.optics.x, draw.optics.y);
   }
-  outColor = vec4(color, 1.0);
+  // kd.w: opacity, 1 - transparency, for the blended draws. With the
+  // environment term the transmitted light is env(T), so the surface is opaque.
+  outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);
 }

@@ -52,5 +52,6 @@ void main() {
       environment = environmentDirections(inPosition, normal, draw.optics.z);
     color += environmentColor(environment, draw.optics.x, draw.optics.y);
   }
-  outColor = vec4(color, 1.0);
+  // kd.w: opacity, 1 - transparency; opaque with the environment term (forward.frag).
+  outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);
 }

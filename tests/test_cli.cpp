@@ -317,6 +317,47 @@ TEST_F(Cli, BenchBadSampleCountIsAUsageError) {
   EXPECT_EQ(filesLeft(), 0u);
 }
 
+// Each broken glTF file of tests/data/bad: exit 2, a message naming the file
+// and the defect, and no output image (not even a temporary).
+TEST_F(Cli, BrokenGltfFilesAreInputErrors) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"truncated.glb", "invalid GLB: truncated"},
+      {"syntax_error.gltf", "parse error at line 73"},
+      {"accessor_past_buffer.gltf", "past the end of its bufferView"},
+      {"missing_buffer.gltf", "does_not_exist.bin"},
+      {"missing_image.gltf", "no_such_image.png"},
+      {"required_extension.gltf", "KHR_draco_mesh_compression"},
+      {"zero_triangles.gltf", "no triangles"},
+      {"index_out_of_range.gltf", "out of range"},
+  };
+  for (const auto& [file, problem] : cases) {
+    std::string path = std::string(SHADELAB_TEST_DATA_DIR) + "/bad/" + file;
+    CommandResult r = run("render " + path + " -o " + out("a.png") + " --size 32x32");
+    EXPECT_EQ(r.exitCode, 2) << file << ": " << r.output;
+    EXPECT_NE(r.output.find("error: " + path + ": "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(problem), std::string::npos) << r.output;
+    EXPECT_EQ(filesLeft(), 0u) << file;
+  }
+}
+
+TEST_F(Cli, RendersAGltfWithSimplificationAndAutoTessellation) {
+  CommandResult gltf = run("render " + std::string(SHADELAB_TEST_DATA_DIR) +
+                           "/textured.gltf -o " + out("a.png") + " --size 64x48 --simplify 1");
+  ASSERT_EQ(gltf.exitCode, 0) << gltf.output;
+  EXPECT_NE(gltf.output.find("simplified loaded meshes to 1 px: 2 -> 2 triangles"),
+            std::string::npos)
+      << gltf.output;
+  EXPECT_EQ(pngSize(out("a.png")), std::make_pair(64u, 48u));
+  CommandResult automatic = run("render spheres -o " + out("b.png") + " --size 64x36 --tess auto");
+  ASSERT_EQ(automatic.exitCode, 0) << automatic.output;
+  CommandResult bad = run("render spheres -o " + out("c.png") + " --tess sometimes");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--tess 'sometimes': expected a factor from 0.125 to 16, or auto"),
+            std::string::npos)
+      << bad.output;
+  EXPECT_EQ(filesLeft(), 2u);
+}
+
 TEST_F(Cli, BadDepthValueIsAnInputError) {
   CommandResult r = run("render -o " + out("a.png") + " --depth d8");
   EXPECT_EQ(r.exitCode, 2) << r.output;

@@ -451,7 +451,7 @@ const ErrorCase kErrorCases[] = {
   {"ZeroIor", noObjects(R"("materials": {"m": {"ior": 0}})"), {"materials.m.ior"}},
   {"NegativeAmbient", noObjects(R"("ambient": [-1, 0, 0])"), {"ambient[0]: -1 is negative"}},
   {"GroupWithoutChildren", oneObject(R"("name": "empty")"),
-   {"scene.json: objects[0]: a group (an object without \"shape\") with no children"}},
+   {"scene.json: objects[0]: a group (an object without \"shape\" or \"gltf\") with no children"}},
   {"GroupWithEmptyChildren", oneObject(R"("children": [])"),
    {"objects[0].children: a group", "a non-empty \"children\" array"}},
 };
@@ -489,9 +489,10 @@ TEST(SceneJsonFile, LoadsThroughLoadSceneAndReportsBadFiles) {
               HasSubstr("scene file '" + missing.string() + "' does not exist"));
   EXPECT_THAT(errorFrom([&] { loadSceneJson(missing); }),
               HasSubstr("scene file '" + missing.string() + "' does not exist"));
-  EXPECT_THAT(loadError(std::filesystem::path(testing::TempDir())), HasSubstr("not supported yet"));
-  EXPECT_THAT(loadError(writeTempFile("shadelab-model.gltf", "{}")),
-              HasSubstr("not supported yet"));
+  EXPECT_THAT(loadError(std::filesystem::path(testing::TempDir())),
+              HasSubstr("unknown file type (no extension)"));
+  std::filesystem::path emptyModel = writeTempFile("shadelab-model.gltf", "{}");
+  EXPECT_THAT(loadError(emptyModel), HasSubstr(emptyModel.string() + ": invalid glTF"));
   std::filesystem::path directory = std::filesystem::path(testing::TempDir()) / "dir.json";
   std::filesystem::create_directories(directory);
   EXPECT_THAT(loadError(directory), HasSubstr("is a directory"));

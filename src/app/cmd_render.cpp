@@ -1,3 +1,4 @@
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include "app/commands.h"
 #include "core/errors.h"
 #include "core/image.h"
+#include "core/lod.h"
 #include "core/scene_loader.h"
 #include "core/stats.h"
 #include "core/texture.h"
@@ -24,7 +26,9 @@ struct RenderOptions {
   std::string size = "1280x720";
   std::string mode = "phong";
   uint32_t frames = 1;
-  float tessellation = 1.0f;
+  std::string tessellation = "1";
+  float tessellationError = 0.5f;
+  float simplify = 0.0f;
   uint32_t msaa = 1;
   std::string environment = "on";
   std::string filter;  // empty: each material's own sampler
@@ -124,16 +128,34 @@ void printTimings(const RenderStats& stats) {
               percentile(wall, 95.0));
 }
 
+float parseTessellationFactor(const std::string& text) {
+  float factor = 0.0f;
+  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), factor);
+  if (error != std::errc() || end != text.data() + text.size() || !(factor >= 0.125f) ||
+      !(factor <= 16.0f))
+    throw InputError("--tess '" + text + "': expected a factor from 0.125 to 16, or auto");
+  return factor;
+}
+
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
-  BenchPoint point{parseShadingModelOption(options.mode, "--mode"), options.tessellation,
-                   options.msaa};
+  bool autoTessellation = options.tessellation == "auto";
+  float factor = autoTessellation ? 1.0f : parseTessellationFactor(options.tessellation);
+  BenchPoint point{parseShadingModelOption(options.mode, "--mode"), factor, options.msaa};
   DepthMode depth = parseDepthModeOption(options.depth, "--depth");
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
   const Reference& reference = findReference(options.reference, "--reference");
   TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  ViewSize view{scene.camera, size.width, size.height};
+  if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
+  if (options.simplify > 0.0f) {
+    SimplifyStats simplified = simplifyForView(scene, view, options.simplify);
+    std::printf("simplified loaded meshes to %g px: %llu -> %llu triangles\n", options.simplify,
+                static_cast<unsigned long long>(simplified.trianglesBefore),
+                static_cast<unsigned long long>(simplified.trianglesAfter));
+  }
   std::vector<QualityCandidate> cached;
   if (options.quality && !options.benchFolder.empty())
     cached = readBenchCandidates(options.benchFolder, scene, metric, options.msaa);
@@ -165,10 +187,11 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
-  std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws)\n",
+  std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled)\n",
               options.output.c_str(), size.width, size.height, scene.name.c_str(),
               std::string(shadingModelName(point.model)).c_str(),
-              static_cast<unsigned long long>(result.stats.triangles), result.stats.drawCalls);
+              static_cast<unsigned long long>(result.stats.triangles), result.stats.drawCalls,
+              result.stats.culledDraws);
   if (options.frames > 1) printTimings(result.stats);
   return finishWithValidation(*context, 0);
 }
@@ -194,9 +217,18 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::Range(1u, 100000u));
   CLI::Option* tess = command->add_option("--tess", options->tessellation,
                       "Scale the tessellation of procedural shapes and Bezier patches (segments "
-                      "per side x FACTOR; icosphere levels + log2 FACTOR)")
+                      "per side x FACTOR, 0.125..16; icosphere levels + log2 FACTOR), or 'auto': "
+                      "from each shape's projected size, chord error within --tess-error")
+      ->capture_default_str();
+  command->add_option("--tess-error", options->tessellationError,
+                      "Screen-space chord error bound of --tess auto, in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(0.125f, 16.0f));
+      ->check(CLI::Range(0.01f, 100.0f));
+  command->add_option("--simplify", options->simplify,
+                      "Simplify loaded (glTF) meshes until their error would exceed PX pixels "
+                      "at this view (meshoptimizer); 0: off")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0f, 100.0f));
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));

@@ -6,6 +6,7 @@
 
 #include <meshoptimizer.h>
 
+#include "core/frustum.h"
 #include "core/transform.h"
 #include "core/uv_mapping.h"
 
@@ -72,7 +73,9 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     return range;
   };
   std::vector<DrawItem> meshRanges;
+  std::vector<Bounds> meshBounds;
   for (const Mesh& mesh : scene.meshes) {
+    meshBounds.push_back(computeBounds(mesh));
     if (!hasTangents(mesh)) {
       Mesh withTangents = mesh;
       computeTangents(withTangents);
@@ -104,7 +107,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
                         ? meshRanges[object.mesh]
                         : projectedRanges.at({object.mesh, material.uvProjection});
     draw.constants.ka = glm::vec4(material.ka, 0.0f);
-    draw.constants.kd = glm::vec4(material.kd, 0.0f);
+    // kd.w is the opacity the fragment shaders write as alpha.
+    draw.constants.kd = glm::vec4(material.kd, 1.0f - material.transparency);
     draw.constants.ks = glm::vec4(material.ks, material.shininess);
     int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
                    (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
@@ -114,10 +118,38 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     draw.constants.optics =
         glm::vec4(material.reflectivity, material.transparency, material.ior, 0.0f);
     draw.textured = maps != 0;
+    // UV-projected copies share the mesh's positions, so its box.
+    draw.worldBounds = transformBounds(meshBounds[object.mesh], object.transform);
+    draw.transparent = material.transparency > 0.0f;
+    gpuScene.anyTransparent |= draw.transparent;
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
   }
   return gpuScene;
+}
+
+std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
+                                   const glm::mat4& projection, bool cull, uint32_t& culled) {
+  Frustum frustum = frustumFromMatrix(projection * view);
+  std::vector<DrawItem> opaque;
+  std::vector<std::pair<float, DrawItem>> transparent;  // (eye-space z, draw)
+  culled = 0;
+  for (const DrawItem& draw : scene.draws) {
+    if (cull && !boxIntersectsFrustum(draw.worldBounds, frustum)) {
+      ++culled;
+      continue;
+    }
+    if (draw.transparent)
+      transparent.emplace_back((view * glm::vec4(centre(draw.worldBounds), 1.0f)).z, draw);
+    else
+      opaque.push_back(draw);
+  }
+  // Eye space looks down -z: the most negative z is the furthest. Ties keep
+  // scene order (stable sort), so the result never depends on the sort's whims.
+  std::stable_sort(transparent.begin(), transparent.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [depth, draw] : transparent) opaque.push_back(draw);
+  return opaque;
 }
 
 LightLayout lightLayoutOf(const Scene& scene) {

@@ -23,6 +23,8 @@ struct DrawItem {
   gpu::DrawConstants constants{};  // material and object index, pushed per draw
   bool textured = false;  // the material has a texture: drawn by the textured pipelines
   VkDescriptorSet materialSet = VK_NULL_HANDLE;  // set 1 when textured (passes/scene_textures)
+  Bounds worldBounds;        // the mesh's box, transformed: what culling tests
+  bool transparent = false;  // blended after the opaque draws, back to front
 };
 
 // How many lights of each kind the shaders loop over: specialization
@@ -45,11 +47,20 @@ struct GpuScene {
   std::vector<DrawItem> draws;
   uint64_t triangles = 0;
   LightLayout lights;
+  bool anyTransparent = false;
 };
 
 // Objects whose material asks for a UV projection draw a copy of their mesh
 // with projected UVs; meshes without tangents get computed ones (mesh.h).
 GpuScene uploadScene(const Context& context, const Scene& scene);
+
+// The draws of one frame, the one place they are filtered and ordered:
+// draws whose box is outside the view frustum are dropped (counted in
+// `culled`), then the opaque ones in scene order, then the transparent ones
+// back to front by the eye-space depth of their box's centre (the painter's
+// algorithm; blending is not commutative).
+std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
+                                   const glm::mat4& projection, bool cull, uint32_t& culled);
 
 // Lights move to eye space, so the shaders light with V = -position; the
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.

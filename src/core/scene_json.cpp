@@ -66,6 +66,13 @@
 //             default the material defaults), "transform" and "children". An object
 //             without "shape" is a group: it draws nothing, takes no material and must have
 //             a non-empty "children" array. Shaped objects may have children too.
+//             An object with "gltf" instead of "shape" places a glTF 2.0 file (.gltf or
+//             .glb, its path relative to this scene file) under the object's transform:
+//             {"gltf": "models/x.gltf", "transform": [{"scale": 2}]}. Its meshes,
+//             materials and textures are added as objects (the glTF node hierarchy
+//             continues the matrix stack); its lights and cameras are ignored, since the
+//             scene file has its own. Such an object takes "name", "transform" and
+//             "children" only.
 //
 // Shapes, centred on the origin; lengths and radii must be > 0:
 //   "plane"     size 1 (side, in the XZ plane facing +y); tessellation 16 quads per side (1..1024)
@@ -135,6 +142,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/gltf_loader.h"
 #include "core/scene_json_environment.h"
 #include "core/scene_json_fields.h"
 #include "core/scene_json_textures.h"
@@ -430,8 +438,12 @@ bool sameShape(const ShapeDesc& a, const ShapeDesc& b) {
 // matrix stack of the course, one frame per recursion level.
 class ObjectBuilder {
  public:
-  ObjectBuilder(Scene& scene, const MaterialTable& materials, TextureLibrary& textures)
-      : scene_(scene), materials_(materials), textures_(textures) {}
+  ObjectBuilder(Scene& scene, const MaterialTable& materials, TextureLibrary& textures,
+                std::filesystem::path baseDirectory)
+      : scene_(scene),
+        materials_(materials),
+        textures_(textures),
+        baseDirectory_(std::move(baseDirectory)) {}
 
   void add(const Field& field, const glm::mat4& parentWorld, int depth) {
     if (depth > kMaxDepth)
@@ -440,8 +452,11 @@ class ObjectBuilder {
     if (!field.json().is_object()) field.wrongType("an object (a shape or a group)");
     const ShapeSpec* spec = nullptr;
     if (auto f = field.optional("shape")) spec = &shapeSpec(*f);
+    std::optional<Field> gltf = field.optional("gltf");
     Names allowed = {"name", "shape", "transform", "children"};
-    if (spec) {
+    if (gltf) {
+      allowed = {"name", "gltf", "transform", "children"};
+    } else if (spec) {
       allowed.push_back("material");
       allowed.push_back("crease_angle");
       allowed.insert(allowed.end(), spec->fields.begin(), spec->fields.end());
@@ -452,7 +467,9 @@ class ObjectBuilder {
     if (auto f = field.optional("name")) name = f->string();
     glm::mat4 world = parentWorld;
     if (auto f = field.optional("transform")) world = parentWorld * parseTransform(*f);
-    if (spec) {
+    if (gltf) {
+      addGltf(*gltf, world);
+    } else if (spec) {
       ShapeDesc shape = parseShape(field, *spec);
       Material surface = material(field, name);  // checked before the (possibly large) mesh is built
       scene_.objects.push_back({name, mesh(shape), world, surface});
@@ -461,10 +478,10 @@ class ObjectBuilder {
     std::optional<Field> children = field.optional("children");
     std::vector<Field> list;
     if (children) list = children->elements("an array of objects");
-    if (!spec && list.empty())
+    if (!spec && !gltf && list.empty())
       (children ? *children : field)
-          .fail("a group (an object without \"shape\") with no children",
-                "a \"shape\" or a non-empty \"children\" array");
+          .fail("a group (an object without \"shape\" or \"gltf\") with no children",
+                "a \"shape\", a \"gltf\" file or a non-empty \"children\" array");
     for (const Field& child : list) add(child, world, depth + 1);
   }
 
@@ -484,6 +501,17 @@ class ObjectBuilder {
                              : "one of " + scene_json::joinNames(names));
   }
 
+  // The glTF's nodes continue this object's matrix stack; its own lights and
+  // cameras are not used (the scene file has its own).
+  void addGltf(const Field& field, const glm::mat4& world) {
+    std::filesystem::path path = baseDirectory_ / field.string();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+      field.fail("glTF file '" + path.string() + "' does not exist",
+                 "a .gltf or .glb file, its path relative to the scene file");
+    appendGltf(scene_, path, world);
+  }
+
   uint32_t mesh(const ShapeDesc& shape) {
     for (uint32_t i = 0; i < scene_.shapes.size(); ++i)
       if (sameShape(scene_.shapes[i], shape)) return i;
@@ -493,6 +521,7 @@ class ObjectBuilder {
   Scene& scene_;
   const MaterialTable& materials_;
   TextureLibrary& textures_;
+  std::filesystem::path baseDirectory_;
 };
 
 // "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error ..."
@@ -561,7 +590,7 @@ Scene parseSceneJson(std::string_view text, const std::string& sourceName) {
   TextureLibrary textures(scene, std::filesystem::path(sourceName).parent_path());
   MaterialTable materials;
   if (auto f = root.optional("materials")) materials = parseMaterials(*f, textures);
-  ObjectBuilder builder(scene, materials, textures);
+  ObjectBuilder builder(scene, materials, textures, std::filesystem::path(sourceName).parent_path());
   Field objects = root.required("objects", "an array of objects (it may be empty)");
   for (const Field& object : objects.elements("an array of objects"))
     builder.add(object, glm::mat4(1.0f), 0);

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/errors.h"
+#include "core/gltf_loader.h"
 #include "core/scene_json.h"
 
 namespace shadelab {
@@ -17,9 +18,10 @@ Scene loadScene(const std::string& nameOrPath) {
     if (!std::filesystem::exists(path))
       throw InputError("scene file '" + nameOrPath + "' does not exist");
     if (ext == ".json") return loadSceneJson(path);
-    throw InputError("scene file '" + nameOrPath + "': loading " +
-                     (ext.empty() ? std::string("this file type") : ext) +
-                     " scenes is not supported yet; use a built-in scene name");
+    if (ext == ".gltf" || ext == ".glb") return loadGltfScene(path);
+    throw InputError("scene file '" + nameOrPath + "': unknown file type " +
+                     (ext.empty() ? std::string("(no extension)") : ext) +
+                     "; expected .json, .gltf or .glb");
   }
   return builtinScene(nameOrPath);
 }

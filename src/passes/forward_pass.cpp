@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "core/mesh.h"
@@ -61,17 +62,20 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
   texturedFragment_ = loadShader(device, "forward_textured.frag");
 }
 
-void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured,
+void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
                           bool environment) {
   for (int model = 0; model < kShadingModelCount; ++model)
-    for (bool variant : {false, true}) {
-      VariantKey key{ShadingModel(model), lights, target, variant, environment};
-      if ((!variant || textured) && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-    }
+    for (bool texturedVariant : {false, true})
+      for (bool blendedVariant : {false, true}) {
+        VariantKey key{ShadingModel(model), lights, target, texturedVariant, blendedVariant,
+                       environment};
+        bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
+        if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+      }
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, target, textured, environment] = key;
+  const auto& [model, lights, target, textured, blended, environment] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -146,9 +150,19 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
+  // Translucent surfaces must not hide what is drawn behind them later.
+  depth.depthWriteEnable = blended ? VK_FALSE : VK_TRUE;
   depth.depthCompareOp = depthCompareOp(target.depth);
   VkPipelineColorBlendAttachmentState blendAttachment{};
+  // "Over": colour = a src + (1 - a) dst with a = 1 - transparency; the
+  // target's alpha stays as the clear left it.
+  blendAttachment.blendEnable = blended ? VK_TRUE : VK_FALSE;
+  blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+  blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+  blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
@@ -184,29 +198,29 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
 
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
                          VkDescriptorSet frameSet, const GpuScene& scene,
-                         const VkViewport& viewport, bool environment) const {
+                         std::span<const DrawItem> draws, const VkViewport& viewport,
+                         bool environment) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto plain = pipelines_.find({model, scene.lights, target, false, environment});
-  auto textured = pipelines_.find({model, scene.lights, target, true, environment});
-  assert(plain != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, plain->second);
-  bool texturedBound = false;
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
                           nullptr);
   VkDeviceSize offset = 0;
   VkBuffer vertexBuffer = scene.vertices.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+  std::optional<std::pair<bool, bool>> bound;  // (textured, blended) of the bound pipeline
   VkDescriptorSet materialSet = VK_NULL_HANDLE;
-  for (const DrawItem& draw : scene.draws) {
-    if (draw.textured != texturedBound) {
-      assert(textured != pipelines_.end() && "ForwardPass::prepare() not called with textured");
-      texturedBound = draw.textured;
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                        (texturedBound ? textured : plain)->second);
+  for (const DrawItem& draw : draws) {
+    std::pair<bool, bool> variant{draw.textured, draw.transparent};
+    if (bound != variant) {
+      auto pipeline =
+          pipelines_.find({model, scene.lights, target, draw.textured, draw.transparent,
+                           environment});
+      assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
+      bound = variant;
     }
     if (draw.textured && draw.materialSet != materialSet) {
       assert(draw.materialSet != VK_NULL_HANDLE && "textured draw without its material set");

@@ -227,7 +227,8 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
 }
 
 void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                           const RenderSettings& settings, const Buffer* readback) {
+                           const RenderSettings& settings, const Buffer* readback,
+                           RenderStats& stats) {
   VkDevice device = context_.device();
   uint32_t width = settings.width, height = settings.height;
   glm::mat4 view = source.camera.viewMatrix();
@@ -237,6 +238,11 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
+  std::vector<DrawItem> draws = visibleDraws(scene, view, projection, settings.frustumCulling,
+                                              stats.culledDraws);
+  stats.drawCalls = uint32_t(draws.size());
+  stats.triangles = 0;
+  for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
   bool environment = bool(sceneEnvironment_);
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
 
@@ -257,9 +263,18 @@ void Renderer::recordFrame(Frame& frame, const GpuScene& scene, const Scene& sou
     float left = std::floor(columnWidth * float(i));
     float right = std::floor(columnWidth * float(i + 1));
     VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
-    forward_.record(cmd, models[i], target_.layout, frame.set, scene, viewport, environment);
-    if (environment)
-      skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
+    // Opaque draws, the skybox where they left the far plane, then the
+    // transparent draws, which write no depth, over both.
+    auto firstTransparent = std::find_if(draws.begin(), draws.end(),
+                                         [](const DrawItem& draw) { return draw.transparent; });
+    std::span<const DrawItem> opaque(draws.begin(), firstTransparent);
+    std::span<const DrawItem> transparent(firstTransparent, draws.end());
+    forward_.record(cmd, models[i], target_.layout, frame.set, scene, opaque, viewport,
+                    environment);
+    if (environment) skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
+    if (!transparent.empty())
+      forward_.record(cmd, models[i], target_.layout, frame.set, scene, transparent, viewport,
+                      environment);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
@@ -310,15 +325,13 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   bindEnvironment(scene, settings.environment);
   bool environment = bool(sceneEnvironment_);
   TargetLayout layout{settings.msaaSamples, settings.depth};
-  forward_.prepare(gpuScene.lights, layout, textured, environment);
+  forward_.prepare(gpuScene.lights, layout, textured, gpuScene.anyTransparent, environment);
   if (environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 
   RenderResult result;
-  result.stats.triangles = gpuScene.triangles;
-  result.stats.drawCalls = uint32_t(gpuScene.draws.size());
   result.stats.deviceMemoryBytes = deviceMemoryInUse();
   double lastCompletion = nowMs();
   for (uint32_t i = 0; i < settings.frames; ++i) {
@@ -326,7 +339,7 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     retire(frame, result.stats, lastCompletion);
     ensureObjectCapacity(frame, uint32_t(scene.objects.size()));
     bool last = i + 1 == settings.frames;
-    recordFrame(frame, gpuScene, scene, settings, last ? &readback : nullptr);
+    recordFrame(frame, gpuScene, scene, settings, last ? &readback : nullptr, result.stats);
   }
   // Retire in submission order so the per-frame timings stay in order.
   for (uint32_t i = 0; i < kFramesInFlight; ++i)

@@ -32,6 +32,7 @@ struct RenderSettings {
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
   TextureOptions textures;  // --filter override, --bump, --mip-tint
   DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
+  bool frustumCulling = true;  // off only to show that culling changes no pixel
   // --env: with a scene environment, the environment term and the skybox;
   // off (or a scene without one) renders with the background colour only.
   bool environment = true;
@@ -40,8 +41,9 @@ struct RenderSettings {
 struct RenderStats {
   std::vector<double> deviceMs;  // per frame, from GPU timestamps around the frame's commands
   std::vector<double> wallMs;    // per frame, interval between successive frame completions
-  uint64_t triangles = 0;        // submitted per frame
-  uint32_t drawCalls = 0;
+  uint64_t triangles = 0;        // submitted per frame (after culling)
+  uint32_t drawCalls = 0;        // submitted per frame (after culling)
+  uint32_t culledDraws = 0;      // objects outside the view frustum, not drawn
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;
@@ -96,7 +98,7 @@ class Renderer {
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats, double& lastCompletion);
   void recordFrame(Frame& frame, const GpuScene& scene, const Scene& source,
-                   const RenderSettings& settings, const Buffer* readback);
+                   const RenderSettings& settings, const Buffer* readback, RenderStats& stats);
   // Builds the scene's cube (kept while the scene's environment stays the
   // same) or picks the placeholder, and points every frame's descriptor at
   // it; call with no frame in flight.

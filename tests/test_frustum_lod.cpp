@@ -1,0 +1,219 @@
+// View-frustum culling's box test against brute force, box transforms, and
+// the level-of-detail formulas (chord error, projected size).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/frustum.h"
+#include "core/lod.h"
+#include "core/scene.h"
+#include "core/transform.h"
+
+namespace shadelab {
+namespace {
+
+glm::vec3 corner(const Bounds& box, int index) {
+  return {index & 1 ? box.max.x : box.min.x, index & 2 ? box.max.y : box.min.y,
+          index & 4 ? box.max.z : box.min.z};
+}
+
+Frustum cameraFrustum() {
+  Camera camera;  // eye (0, 2, 6) looking at the origin, 45 degrees, near 0.1, far 100
+  return frustumFromMatrix(camera.projectionMatrix(16.0f / 9.0f) * camera.viewMatrix());
+}
+
+Bounds cube(glm::vec3 centre, float half) {
+  return {centre - glm::vec3(half), centre + glm::vec3(half)};
+}
+
+class FrustumPlanes : public ::testing::TestWithParam<Projection> {};
+
+TEST_P(FrustumPlanes, BoundWhatTheProjectionMapsIntoClipSpace) {
+  Camera camera;
+  camera.projection = GetParam();
+  camera.left = -8.0f, camera.right = 6.0f, camera.bottom = -4.0f, camera.top = 5.0f;
+  if (camera.projection == Projection::Frustum) {
+    camera.left = -0.08f, camera.right = 0.05f, camera.bottom = -0.04f, camera.top = 0.06f;
+  }
+  glm::mat4 viewProjection = camera.projectionMatrix(1.5f) * camera.viewMatrix();
+  Frustum frustum = frustumFromMatrix(viewProjection);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> coordinate(-30.0f, 30.0f);
+  int inside = 0;
+  for (int i = 0; i < 4000; ++i) {
+    glm::vec3 p(coordinate(random), coordinate(random), coordinate(random));
+    glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+    bool inClip = clip.w > 0 && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
+                  clip.z >= 0 && clip.z <= clip.w;
+    bool inPlanes = true;
+    for (const Plane& plane : frustum.planes) inPlanes &= plane.signedDistance(p) >= -1e-4f;
+    // Points within float rounding of a plane may go either way.
+    float margin = 1e9f;
+    for (const Plane& plane : frustum.planes)
+      margin = std::min(margin, std::abs(plane.signedDistance(p)));
+    if (margin > 1e-3f) {
+      EXPECT_EQ(inClip, inPlanes) << p.x << " " << p.y << " " << p.z;
+    }
+    inside += inClip;
+  }
+  EXPECT_GT(inside, 20);  // the sample reaches inside as well as out
+}
+
+INSTANTIATE_TEST_SUITE_P(Projections, FrustumPlanes,
+                         ::testing::Values(Projection::Perspective, Projection::Frustum,
+                                           Projection::Orthographic));
+
+TEST(FrustumCulling, BoxesInsideOutsideAndStraddling) {
+  Frustum frustum = cameraFrustum();
+  EXPECT_TRUE(boxIntersectsFrustum(cube({0, 0, 0}, 0.5f), frustum));      // in the middle
+  EXPECT_FALSE(boxIntersectsFrustum(cube({0, 2, 9}, 0.5f), frustum));     // behind the eye
+  EXPECT_FALSE(boxIntersectsFrustum(cube({0, 0, -200}, 1.0f), frustum));  // beyond far
+  EXPECT_FALSE(boxIntersectsFrustum(cube({-30, 0, 0}, 1.0f), frustum));   // off to the left
+  EXPECT_TRUE(boxIntersectsFrustum(cube({-30, 0, 0}, 28.0f), frustum));   // reaching in
+  EXPECT_TRUE(boxIntersectsFrustum(cube({0, 0, 0}, 500.0f), frustum));    // containing it all
+}
+
+// The positive-vertex test is exactly "all 8 corners outside one plane".
+TEST(FrustumCulling, BoxTestEqualsBruteForceOverCorners) {
+  Frustum frustum = cameraFrustum();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> coordinate(-40.0f, 40.0f), size(0.01f, 15.0f);
+  int culled = 0;
+  for (int i = 0; i < 5000; ++i) {
+    glm::vec3 low(coordinate(random), coordinate(random), coordinate(random));
+    Bounds box{low, low + glm::vec3(size(random), size(random), size(random))};
+    bool outsideOnePlane = false;
+    for (const Plane& plane : frustum.planes) {
+      bool allOut = true;
+      for (int c = 0; c < 8; ++c) allOut &= plane.signedDistance(corner(box, c)) < 0.0f;
+      outsideOnePlane |= allOut;
+    }
+    EXPECT_EQ(boxIntersectsFrustum(box, frustum), !outsideOnePlane);
+    culled += outsideOnePlane;
+  }
+  EXPECT_GT(culled, 500);
+  EXPECT_LT(culled, 4900);
+}
+
+// Arvo's box contains every transformed corner and touches each of its faces.
+TEST(FrustumCulling, TransformedBoundsAreTightAroundTheCorners) {
+  Bounds box{{-1, -2, -0.5f}, {3, 1, 0.5f}};
+  glm::mat4 transform = translation({5, -1, 2}) * rotationAxis({1, 2, 3}, 0.7f) *
+                        scaling({2, 0.5f, 3}) * shearing({.xy = 0.3f});
+  Bounds out = transformBounds(box, transform);
+  glm::vec3 low(1e9f), high(-1e9f);
+  for (int c = 0; c < 8; ++c) {
+    glm::vec3 p = glm::vec3(transform * glm::vec4(corner(box, c), 1.0f));
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(out.min[axis], low[axis], 1e-4f);
+    EXPECT_NEAR(out.max[axis], high[axis], 1e-4f);
+  }
+}
+
+TEST(LevelOfDetail, ChordErrorSegmentsAreTheSmallestWithinTheBound) {
+  for (float radius : {0.1f, 1.0f, 7.5f})
+    for (float error : {0.0005f, 0.01f, 0.05f}) {
+      uint32_t n = segmentsForChordError(radius, error);
+      auto chord = [&](uint32_t segments) {
+        return radius * (1.0f - std::cos(3.14159265f / float(segments)));
+      };
+      EXPECT_LE(chord(n), error * 1.0001f) << radius << " " << error;
+      if (n > 3) {
+        EXPECT_GT(chord(n - 1), error * 0.9999f) << radius << " " << error;
+      }
+    }
+  EXPECT_EQ(segmentsForChordError(1.0f, 2.0f), 3u);  // any triangle is within 2
+}
+
+TEST(LevelOfDetail, PixelsPerUnitFollowTheProjection) {
+  ViewSize view{Camera{}, 1280, 720};
+  view.camera.fovyDegrees = 90.0f;  // tan(45) = 1: the view is 2 depth high
+  EXPECT_NEAR(pixelsPerUnit(view, 4.0f), 720.0f / 8.0f, 1e-3f);
+  view.camera.projection = Projection::Orthographic;
+  view.camera.bottom = -3.0f;
+  view.camera.top = 3.0f;
+  EXPECT_NEAR(pixelsPerUnit(view, 4.0f), 120.0f, 1e-3f);
+  EXPECT_NEAR(pixelsPerUnit(view, 40.0f), 120.0f, 1e-3f);
+}
+
+// --tess auto: a sphere far away needs fewer slices than the same sphere
+// near; and the chosen slice count meets the pixel bound at the sphere's
+// nearest point.
+TEST(LevelOfDetail, AutoTessellationMeetsThePixelBound) {
+  auto slicesAt = [](float distance) {
+    Scene scene;
+    scene.camera.eye = glm::vec3(0, 0, distance);
+    scene.camera.at = glm::vec3(0);
+    ShapeDesc sphere;
+    sphere.kind = ShapeKind::UvSphere;
+    sphere.radius = 1.0f;
+    sphere.tessellation = 16;
+    scene.objects.push_back({"ball", scene.addShape(sphere), glm::mat4(1.0f), Material{}});
+    ViewSize view{scene.camera, 640, 360};
+    tessellateForView(scene, view, 0.5f);
+    uint32_t slices = scene.shapes[0].tessellation;
+    float ppu = pixelsPerUnit(view, distance - 1.0f);
+    EXPECT_LE((1.0f - std::cos(3.14159265f / float(slices))) * ppu, 0.5f) << distance;
+    EXPECT_EQ(scene.meshes[0].triangleCount(), buildShape(scene.shapes[0]).triangleCount());
+    return slices;
+  };
+  uint32_t near = slicesAt(3.0f), far = slicesAt(30.0f);
+  EXPECT_GT(near, far);
+  EXPECT_GE(far, 3u);
+}
+
+// The torus's ring (outer circle R + r, n segments) and tube (r, n / 2) and
+// the teapot's body (radius 2, 4 patches of k quads around) meet the bound.
+TEST(LevelOfDetail, TorusAndTeapotLevelsMeetThePixelBound) {
+  Scene scene;
+  scene.camera.eye = glm::vec3(0, 0, 12);
+  ShapeDesc torus;
+  torus.kind = ShapeKind::Torus;
+  torus.majorRadius = 1.0f;
+  torus.minorRadius = 0.3f;
+  ShapeDesc teapot;
+  teapot.kind = ShapeKind::Teapot;
+  scene.objects.push_back({"torus", scene.addShape(torus), glm::mat4(1.0f), Material{}});
+  scene.objects.push_back({"teapot", scene.addShape(teapot), scaling(glm::vec3(0.5f)), Material{}});
+  ViewSize view{scene.camera, 1280, 720};
+  tessellateForView(scene, view, 0.5f);
+  auto chordPixels = [&](float radius, uint32_t segments, float depth, float scale) {
+    return scale * radius * (1.0f - std::cos(3.14159265f / float(segments))) *
+           pixelsPerUnit(view, depth);
+  };
+  uint32_t n = scene.shapes[0].tessellation;
+  float torusDepth = 12.0f - boundingRadius(computeBounds(scene.meshes[0]));
+  EXPECT_LE(chordPixels(1.3f, n, torusDepth, 1.0f), 0.5f);
+  EXPECT_LE(chordPixels(0.3f, n / 2, torusDepth, 1.0f), 0.5f);
+  uint32_t k = scene.shapes[1].tessellation;
+  Bounds teapotBox = transformBounds(computeBounds(scene.meshes[1]), scaling(glm::vec3(0.5f)));
+  float teapotDepth = 12.0f - centre(teapotBox).z - boundingRadius(teapotBox);
+  EXPECT_LE(chordPixels(2.0f, 4 * k, teapotDepth, 0.5f), 0.5f);
+  EXPECT_GT(chordPixels(2.0f, 4 * (k - 1), teapotDepth, 0.5f), 0.5f);  // and no finer
+}
+
+// --simplify: a finely tessellated sphere (a custom mesh, as glTF ones are)
+// far away loses most triangles; near it keeps more.
+TEST(LevelOfDetail, SimplificationKeepsMoreTrianglesWhenNearer) {
+  auto keptAt = [](float distance) {
+    Scene scene;
+    scene.camera.eye = glm::vec3(0, 0, distance);
+    scene.camera.at = glm::vec3(0);
+    scene.objects.push_back(
+        {"ball", scene.addMesh(makeUvSphere(1.0f, 128, 64)), glm::mat4(1.0f), Material{}});
+    SimplifyStats stats = simplifyForView(scene, ViewSize{scene.camera, 640, 360}, 0.5f);
+    EXPECT_EQ(stats.trianglesBefore, makeUvSphere(1.0f, 128, 64).triangleCount());
+    EXPECT_EQ(stats.trianglesAfter, scene.meshes[0].triangleCount());
+    return stats.trianglesAfter;
+  };
+  uint64_t near = keptAt(2.5f), far = keptAt(40.0f);
+  EXPECT_LT(far, near);
+  EXPECT_LT(far, makeUvSphere(1.0f, 128, 64).triangleCount() / 4);
+}
+
+}  // namespace
+}  // namespace shadelab
