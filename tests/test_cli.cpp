@@ -29,7 +29,8 @@ CommandResult run(const std::string& arguments) {
   if (!pipe) return result;
   std::array<char, 4096> buffer;
   size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    result.output.append(buffer.data(), n);
   int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -175,8 +176,8 @@ TEST_F(Cli, InfoNamesDeviceDriverAndVersion) {
 }
 
 TEST_F(Cli, HelpSucceedsForEachCommand) {
-  for (const char* command :
-       {"--help", "render --help", "compare --help", "bench --help", "info --help"}) {
+  for (const char* command : {"--help", "render --help", "compare --help", "bench --help",
+                              "info --help", "trace --help"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 0) << command << "\n" << r.output;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << command;
@@ -189,14 +190,15 @@ std::string readText(const std::string& path) {
 }
 
 TEST_F(Cli, RenderLoadsJsonSceneFile) {
-  CommandResult r = run(std::string("render ") + SHADELAB_ASSET_DIR + "/scenes/three-spheres.json -o " +
-                        out("a.png") + " --size 64x36");
+  CommandResult r = run(std::string("render ") + SHADELAB_ASSET_DIR +
+                        "/scenes/three-spheres.json -o " + out("a.png") + " --size 64x36");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(pngSize(out("a.png")), std::make_pair(64u, 36u));
 }
 
 TEST_F(Cli, MalformedJsonSceneNamesFileAndField) {
-  std::ofstream(out("bad.json")) << R"({"camera": {"eye": [0, 1], "at": [0, 0, 0]}, "objects": []})";
+  std::ofstream(out("bad.json"))
+      << R"({"camera": {"eye": [0, 1], "at": [0, 0, 0]}, "objects": []})";
   CommandResult r = run("render " + out("bad.json") + " -o " + out("a.png"));
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("bad.json"), std::string::npos) << r.output;
@@ -239,16 +241,48 @@ TEST_F(Cli, TessellationOutOfRangeIsAUsageError) {
 }
 
 TEST_F(Cli, CompareWritesSheetAndNumbers) {
-  CommandResult r = run("compare teapot -o " + out("sheet.png") + " --size 64x36 --modes flat,phong");
+  CommandResult r =
+      run("compare teapot -o " + out("sheet.png") + " --size 64x36 --modes flat,phong");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   // Reference, flat and phong across; images above heatmaps and labels.
   auto [width, height] = pngSize(out("sheet.png"));
   EXPECT_GE(width, 3u * 64u);
   EXPECT_GE(height, 2u * 36u);
   std::string json = readText(out("sheet.json"));
-  for (const char* key : {"\"flat\"", "\"phong\"", "\"rmse\"", "\"psnr\""})
+  for (const char* key : {"\"flat\"", "\"phong\"", "\"rmse\"", "\"psnr\"", "\"ssim\"", "\"flip\"",
+                          "Whitted ray tracer, 4 spp"})
     EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
   EXPECT_EQ(filesLeft(), 2u);
+}
+
+TEST_F(Cli, CompareKeepsTheRasterReference) {
+  CommandResult r =
+      run("compare -o " + out("sheet.png") + " --size 64x36 --modes phong --reference raster");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(readText(out("sheet.json")).find("4x MSAA"), std::string::npos);
+}
+
+TEST_F(Cli, CompareUnknownReferenceIsAnInputError) {
+  CommandResult r = run("compare -o " + out("sheet.png") + " --reference photo");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("photo"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
+TEST_F(Cli, TraceWritesTheImageAndReportsRays) {
+  CommandResult r = run("trace whitted -o " + out("ref.png") + " --size 48x27 --spp 4 --threads 2");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(pngSize(out("ref.png")), std::make_pair(48u, 27u));
+  EXPECT_NE(r.output.find("Mrays/s"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("5184 primary"), std::string::npos) << r.output;  // 48 * 27 * 4
+  EXPECT_EQ(filesLeft(), 1u);
+}
+
+TEST_F(Cli, TraceNonSquareSampleCountIsAnInputError) {
+  CommandResult r = run("trace -o " + out("ref.png") + " --spp 8");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("samples per pixel 8"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
 }
 
 TEST_F(Cli, CompareUnknownModeIsAnInputError) {
@@ -434,7 +468,7 @@ TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
 const std::vector<std::string> kBenchColumns = {
     "scene", "width", "height", "mode", "tessellation", "msaa", "filter", "triangles", "frames",
     "device_median_ms", "device_p95_ms", "wall_median_ms", "wall_p95_ms", "device_memory_mb",
-    "peak_rss_mb", "reference", "rmse", "psnr"};
+    "peak_rss_mb", "reference", "rmse", "psnr", "ssim", "flip"};
 
 TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   CommandResult r = run("bench default -o " + out("b") +

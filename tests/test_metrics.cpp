@@ -1,7 +1,9 @@
 // Image metrics, sRGB transfer functions and statistics against hand-worked numbers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "core/metrics.h"
@@ -65,6 +67,155 @@ TEST(Metrics, HeatmapIsBlackWhereEqualAndBrightWhereDifferent) {
   ImageU8 heat = differenceHeatmap(a, b, 8.0f);
   EXPECT_EQ(heat.at(0, 0), glm::u8vec4(0, 0, 0, 255));
   EXPECT_EQ(heat.at(2, 0), glm::u8vec4(255, 255, 255, 255));  // 100 * 8 saturates
+}
+
+// A deterministic textured image: a smooth colour gradient with a sharp-edged
+// checker and fine stripes, so blur and shifts change its structure.
+ImageU8 pattern(uint32_t w = 96, uint32_t h = 64) {
+  ImageU8 image(w, h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const bool checker = ((x / 8) + (y / 8)) % 2 == 0;
+      const bool stripe = (x % 3) == 0;
+      image.set(
+          x, y,
+          {uint8_t(checker ? 200 : 40), uint8_t(stripe ? 180 : 60 + y), uint8_t(30 + 2 * x), 255});
+    }
+  return image;
+}
+
+ImageU8 offset(const ImageU8& image, int delta) {
+  ImageU8 result = image;
+  for (size_t i = 0; i < result.pixels.size(); ++i)
+    if (i % 4 != 3) result.pixels[i] = uint8_t(std::clamp(int(result.pixels[i]) + delta, 0, 255));
+  return result;
+}
+
+// A box blur of the given radius (edge pixels repeat).
+ImageU8 blurred(const ImageU8& image, int radius) {
+  ImageU8 result = image;
+  const int w = int(image.width), h = int(image.height);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        int sum = 0, count = 0;
+        for (int dy = -radius; dy <= radius; ++dy)
+          for (int dx = -radius; dx <= radius; ++dx, ++count)
+            sum += image.at(uint32_t(std::clamp(x + dx, 0, w - 1)),
+                            uint32_t(std::clamp(y + dy, 0, h - 1)))[c];
+        result.pixels[(size_t(y) * w + x) * 4 + c] = uint8_t((sum + count / 2) / count);
+      }
+  return result;
+}
+
+ImageU8 shiftedRight(const ImageU8& image) {
+  ImageU8 result = image;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 1; x < image.width; ++x) result.set(x, y, image.at(x - 1, y));
+  return result;
+}
+
+void expectInUnitInterval(const MetricMap& map) {
+  for (float v : map.values) {
+    ASSERT_TRUE(std::isfinite(v));
+    ASSERT_GE(v, 0.0f);
+    ASSERT_LE(v, 1.0f);
+  }
+}
+
+TEST(Ssim, IdenticalImagesScoreOne) {
+  const ImageU8 a = pattern();
+  const MetricMap map = structuralSimilarity(a, a);
+  EXPECT_EQ(map.mean, 1.0);
+  for (float v : map.values) EXPECT_EQ(v, 1.0f);
+}
+
+TEST(Ssim, ConstantOffsetLowersOnlyTheLuminanceTerm) {
+  const ImageU8 a = pattern();
+  const double small = structuralSimilarity(a, offset(a, 10)).mean;
+  const double large = structuralSimilarity(a, offset(a, 40)).mean;
+  EXPECT_LT(small, 1.0);
+  EXPECT_GT(small, 0.95);  // structure and contrast are kept (but for clipping)
+  EXPECT_LT(large, small);
+}
+
+TEST(Ssim, BlurAndShiftLowerItMonotonically) {
+  const ImageU8 a = pattern();
+  const double blur1 = structuralSimilarity(a, blurred(a, 1)).mean;
+  const double blur2 = structuralSimilarity(a, blurred(a, 2)).mean;
+  const double shift = structuralSimilarity(a, shiftedRight(a)).mean;
+  std::printf("SSIM: blur r1 %.4f, blur r2 %.4f, one-pixel shift %.4f\n", blur1, blur2, shift);
+  EXPECT_LT(blur1, 0.9);
+  EXPECT_LT(blur2, blur1);
+  EXPECT_LT(shift, 0.9);
+  EXPECT_THROW(structuralSimilarity(ImageU8(4, 4), ImageU8(4, 5)), std::invalid_argument);
+}
+
+TEST(Flip, IdenticalImagesScoreZero) {
+  const ImageU8 a = pattern();
+  const MetricMap map = flipError(a, a);
+  EXPECT_EQ(map.mean, 0.0);
+  for (float v : map.values) EXPECT_EQ(v, 0.0f);
+}
+
+TEST(Flip, ConstantOffsetGrowsWithTheOffset) {
+  const ImageU8 a = pattern();
+  double previous = 0.0;
+  for (int delta : {2, 8, 24, 64}) {
+    const MetricMap map = flipError(a, offset(a, delta));
+    expectInUnitInterval(map);
+    EXPECT_GT(map.mean, previous) << delta;
+    previous = map.mean;
+  }
+}
+
+TEST(Flip, BlurAndShiftAreSeenWhereTheEdgesAre) {
+  const ImageU8 a = pattern();
+  const MetricMap blur1 = flipError(a, blurred(a, 1));
+  const MetricMap blur2 = flipError(a, blurred(a, 2));
+  const MetricMap shift = flipError(a, shiftedRight(a));
+  std::printf("FLIP: blur r1 %.4f, blur r2 %.4f, one-pixel shift %.4f\n", blur1.mean, blur2.mean,
+              shift.mean);
+  expectInUnitInterval(blur2);
+  expectInUnitInterval(shift);
+  EXPECT_GT(blur1.mean, 0.01);
+  EXPECT_GT(blur2.mean, blur1.mean);
+  EXPECT_GT(shift.mean, 0.01);
+  // A shift changes the checker's vertical edges (x = 8, 16, ...), not the
+  // inside of its squares, where only the stripes move.
+  EXPECT_GT(shift.at(8, 4), shift.at(4, 4) + 0.05f);
+}
+
+TEST(Flip, OppositesScoreNearOneAndStayInRange) {
+  const MetricMap map =
+      flipError(filled(32, 32, {0, 0, 0, 255}), filled(32, 32, {255, 255, 255, 255}));
+  expectInUnitInterval(map);
+  EXPECT_GT(map.mean, 0.9);
+  // Green against blue is the metric's largest colour difference: 1.
+  EXPECT_NEAR(flipError(filled(32, 32, {0, 255, 0, 255}), filled(32, 32, {0, 0, 255, 255})).mean,
+              1.0, 1e-3);
+  EXPECT_THROW(flipError(ImageU8(4, 4), ImageU8(5, 4)), std::invalid_argument);
+}
+
+TEST(Flip, ViewingDistanceMatters) {
+  // Seen from further away (more pixels per degree) a one-pixel shift of
+  // fine detail is harder to see.
+  const ImageU8 a = pattern(), b = shiftedRight(pattern());
+  EXPECT_LT(flipError(a, b, 200.0).mean, flipError(a, b, 67.0).mean);
+}
+
+TEST(Flip, MagmaHeatmapRunsFromBlackToPaleYellow) {
+  MetricMap map{5, 1, {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}, 0.5};
+  const ImageU8 heat = magmaHeatmap(map);
+  EXPECT_EQ(heat.at(0, 0), glm::u8vec4(0, 0, 4, 255));
+  EXPECT_EQ(heat.at(4, 0), glm::u8vec4(252, 253, 191, 255));
+  float previous = -1.0f;
+  for (uint32_t x = 0; x < 5; ++x) {  // lightness rises along the ramp
+    const glm::u8vec4 c = heat.at(x, 0);
+    const float luma = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+    EXPECT_GT(luma, previous) << x;
+    previous = luma;
+  }
 }
 
 TEST(Srgb, TransferFunctionMatchesTheStandard) {

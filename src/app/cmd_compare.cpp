@@ -3,6 +3,8 @@
 // and its error numbers; the numbers also go to a JSON file beside the sheet.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 
@@ -11,6 +13,7 @@
 #include "core/errors.h"
 #include "core/files.h"
 #include "core/metrics.h"
+#include "core/raytracer.h"
 #include "core/scene_loader.h"
 #include "core/sheet.h"
 #include "passes/reference.h"
@@ -24,7 +27,9 @@ struct CompareOptions {
   std::string output;
   std::string size = "480x270";
   std::string modes = "flat,gouraud,phong,blinn-phong";
-  std::string reference = "raster";
+  std::string reference = "trace";
+  uint32_t samplesPerPixel = 4;
+  std::string shadows = "on";
 };
 
 ImageU8 crop(const ImageU8& image, uint32_t x0, uint32_t width) {
@@ -32,6 +37,20 @@ ImageU8 crop(const ImageU8& image, uint32_t x0, uint32_t width) {
   for (uint32_t y = 0; y < image.height; ++y)
     for (uint32_t x = 0; x < width; ++x) result.set(x, y, image.at(x0 + x, y));
   return result;
+}
+
+// The heatmaps' key: the FLIP ramp from 0 (left) to 1 (right) in a band
+// across the cell, on the sheet's background.
+ImageU8 flipLegend(uint32_t width, uint32_t height) {
+  MetricMap ramp{width, height, std::vector<float>(size_t(width) * height), 0.0};
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x)
+      ramp.values[size_t(y) * width + x] = float(x) / float(std::max(1u, width - 1));
+  ImageU8 legend = magmaHeatmap(ramp);
+  for (uint32_t y = 0; y < height; ++y)
+    if (y < height * 2 / 5 || y >= height * 3 / 5)
+      for (uint32_t x = 0; x < width; ++x) legend.set(x, y, {20, 20, 23, 255});
+  return legend;
 }
 
 std::string fixed(double value, int digits) {
@@ -45,46 +64,66 @@ std::string fixed(double value, int digits) {
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Size cell = parseSize(options.size, "--size");
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
-  const Reference& reference = findReference(options.reference, "--reference");
+  checkSamplesPerPixel(options.samplesPerPixel);
+  Reference reference = findReference(options.reference, "--reference");
+  if (reference.name == "trace")
+    reference = traceReference(options.samplesPerPixel, options.shadows == "on");
   std::filesystem::path sheetPath(options.output);
   if (sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
   checkOutputPath(sheetPath);
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
   Scene scene = loadScene(options.scene);
+  if (options.reference == "trace") warnAboutUntracedTextures(scene);
 
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;
+  double referenceSeconds = 0.0;
   {
     Renderer renderer(*context);
     RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
     settings.splitModels = models;
     split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
+    const auto start = std::chrono::steady_clock::now();
     expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
+    referenceSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  std::vector<SheetCell> renders{{expected, "reference", {reference.description}}};
-  std::vector<SheetCell> heatmaps{{ImageU8(), "", {"heatmaps: |difference| x8", "black = equal"}}};
+  const std::string& description = reference.description;
+  std::vector<SheetCell> renders{{expected, "reference", {description}}};
+  std::vector<SheetCell> heatmaps{{flipLegend(cell.width, cell.height),
+                                   "FLIP error",
+                                   {"0 (left): no visible difference", "1 (right): the largest",
+                                    "viewed at 67 pixels/degree"}}};
   nlohmann::json report = {{"scene", scene.name},
                            {"size", options.size},
-                           {"reference", reference.description},
+                           {"reference", description},
                            {"modes", nlohmann::json::array()}};
-  std::printf("%-12s %10s %10s %8s\n", "mode", "RMSE", "PSNR dB", "max");
+  std::printf("reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
+  std::printf("%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
+              "mean FLIP");
   for (size_t i = 0; i < models.size(); ++i) {
     std::string name(shadingModelName(models[i]));
     ImageU8 image = crop(split, uint32_t(i) * cell.width, cell.width);
     ImageDifference difference = compareImages(expected, image);
+    const double ssim = structuralSimilarity(expected, image).mean;
+    const MetricMap flip = flipError(expected, image);
     renders.push_back({image, name, {}});
-    heatmaps.push_back({differenceHeatmap(expected, image), name + " vs reference",
-                        {"RMSE " + fixed(difference.rmse, 3) + "  PSNR " +
-                             fixed(difference.psnr, 2) + " dB",
-                         "max difference " + std::to_string(difference.maxDifference) + "/255"}});
+    heatmaps.push_back(
+        {magmaHeatmap(flip),
+         name + " vs reference",
+         {"RMSE " + fixed(difference.rmse, 3) + "  PSNR " + fixed(difference.psnr, 2) + " dB",
+          "SSIM " + fixed(ssim, 4) + "  FLIP " + fixed(flip.mean, 4),
+          "max difference " + std::to_string(difference.maxDifference) + "/255"}});
     report["modes"].push_back({{"mode", name},
                                {"rmse", difference.rmse},
                                {"psnr", difference.psnr},
+                               {"ssim", ssim},
+                               {"flip", flip.mean},
                                {"maxDifference", difference.maxDifference}});
-    std::printf("%-12s %10.3f %10.2f %8d\n", name.c_str(), difference.rmse, difference.psnr,
-                difference.maxDifference);
+    std::printf("%-12s %10.3f %10.2f %8d %8.4f %10.4f\n", name.c_str(), difference.rmse,
+                difference.psnr, difference.maxDifference, ssim, flip.mean);
   }
   writeImage(composeSheet({renders, heatmaps}), sheetPath);
   writeTextFile(jsonPath, report.dump(2) + "\n");
@@ -105,8 +144,21 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command->add_option("--modes", options->modes, "Comma-separated shading models")
       ->capture_default_str();
-  command->add_option("--reference", options->reference, "Reference renderer: raster")
+  command
+      ->add_option("--reference", options->reference,
+                   "Reference: trace (the CPU Whitted ray tracer) or raster (Phong at 4x "
+                   "tessellation with 4x MSAA)")
       ->capture_default_str();
+  command
+      ->add_option("--spp", options->samplesPerPixel,
+                   "Samples per pixel of the traced reference, a square (1, 4, 9, ...)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 256u));
+  command
+      ->add_option("--shadows", options->shadows,
+                   "Shadows in the traced reference: on, or off (to compare shading alone)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   return [options, &global] { return runCompare(*options, global); };
 }
 

@@ -2,7 +2,6 @@
 // Subcommands of the shadelab binary. Each registers its options on the CLI11
 // app; its callback runs the command and returns the process exit code.
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string>
 
@@ -19,5 +18,6 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addInfoCommand(CLI::App& app, const GlobalOptions& global);
+CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace shadelab

@@ -32,10 +32,9 @@ int main(int argc, char** argv) {
   app.add_option("--device", global.device, "Use the Vulkan 1.3 device whose name contains NAME");
 
   std::map<std::string, CommandRunner> commands = {
-      {"render", addRenderCommand(app, global)},
-      {"compare", addCompareCommand(app, global)},
-      {"bench", addBenchCommand(app, global)},
-      {"info", addInfoCommand(app, global)},
+      {"render", addRenderCommand(app, global)}, {"compare", addCompareCommand(app, global)},
+      {"bench", addBenchCommand(app, global)},   {"info", addInfoCommand(app, global)},
+      {"trace", addTraceCommand(app, global)},
   };
   try {
     app.parse(argc, argv);

@@ -240,6 +240,42 @@ Scene environmentScene() {
   return scene;
 }
 
+// The ray tracer's showcase (Whitted 1980): a mirror sphere and a glass
+// sphere (ior 1.5) over a plain floor, a matte box and sphere behind them to
+// be seen in the mirror and through the glass, under a point light and a
+// directional light, against a sky-blue background.
+Scene whittedScene() {
+  Scene scene;
+  scene.name = "whitted";
+  scene.camera.eye = {0.0f, 1.6f, 6.5f};
+  scene.camera.at = {0.0f, 0.8f, 0.0f};
+  scene.camera.fovyDegrees = 40.0f;
+  scene.ambient = glm::vec3(0.4f);
+  scene.background = {0.35f, 0.5f, 0.75f};
+  scene.lights.push_back(pointLight({-3.0f, 5.0f, 4.0f}, glm::vec3(0.9f), {1.0f, 0.0f, 0.005f}));
+  scene.lights.push_back(directionalLight({0.5f, -1.0f, -0.4f}, glm::vec3(0.35f)));
+  uint32_t floor = scene.addShape(plane(16.0f, 8));
+  uint32_t ball = scene.addShape(uvSphere(0.8f, 48));
+  uint32_t cube = scene.addShape(box(glm::vec3(0.5f)));
+  scene.objects.push_back({"floor", floor, glm::mat4(1.0f),
+                           material({0.55f, 0.5f, 0.45f}, glm::vec3(0.1f), 8.0f)});
+  Material mirror = material({0.05f, 0.05f, 0.05f}, glm::vec3(0.9f), 256.0f);
+  mirror.reflectivity = 0.85f;
+  scene.objects.push_back({"mirror", ball, translation({-1.0f, 0.8f, -0.4f}), mirror});
+  Material glass = material({0.02f, 0.02f, 0.02f}, glm::vec3(0.9f), 256.0f);
+  glass.reflectivity = 0.1f;
+  glass.transparency = 0.85f;
+  glass.ior = 1.5f;
+  scene.objects.push_back({"glass", ball, translation({0.9f, 0.8f, 1.0f}), glass});
+  scene.objects.push_back({"box", cube,
+                           translation({1.6f, 0.5f, -1.8f}) * rotationY(glm::radians(25.0f)),
+                           material({0.8f, 0.3f, 0.2f}, glm::vec3(0.3f), 32.0f)});
+  scene.objects.push_back({"ball", ball,
+                           translation({-0.2f, 0.45f, -2.6f}) * scaling(glm::vec3(0.56f)),
+                           material({0.2f, 0.6f, 0.3f}, glm::vec3(0.4f), 32.0f)});
+  return scene;
+}
+
 int32_t addTexture(Scene& scene, Texture texture) {
   scene.textures.push_back(std::move(texture));
   return int32_t(scene.textures.size() - 1);
@@ -317,6 +353,7 @@ const std::map<std::string, std::function<Scene()>>& registry() {
       {"mip-plane", mipPlaneScene},
       {"spheres", spheresScene},
       {"teapot", teapotScene},
+      {"whitted", whittedScene},
       {"zfight", [] { return zfightScene(Projection::Perspective, 0.1f); }},
   };
   return scenes;

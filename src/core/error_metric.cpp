@@ -21,6 +21,14 @@ const std::vector<ErrorMetric>& errorMetrics() {
        [](const ImageU8& reference, const ImageU8& image) {
          return std::min(compareImages(reference, image).psnr, kPsnrCap);
        }},
+      {"ssim", "SSIM (1 = identical, higher is better)", false,
+       [](const ImageU8& reference, const ImageU8& image) {
+         return structuralSimilarity(reference, image).mean;
+       }},
+      {"flip", "mean FLIP (0 = identical, lower is better)", true,
+       [](const ImageU8& reference, const ImageU8& image) {
+         return flipError(reference, image).mean;
+       }},
   };
   return metrics;
 }

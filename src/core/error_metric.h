@@ -1,7 +1,7 @@
 #pragma once
 // The error the benchmark and `render --quality` measure against a
-// reference, chosen by name so that a new metric is one table entry: RMSE
-// and PSNR today (8-bit sRGB, core/metrics.h); FLIP joins with the ray tracer.
+// reference, chosen by name so that a new metric is one table entry: RMSE,
+// PSNR (8-bit sRGB), SSIM and mean FLIP (core/metrics.h).
 #include <functional>
 #include <string>
 #include <vector>

@@ -40,6 +40,10 @@ struct Mesh {
 // parameterisation. Convention: +v runs along cross(normal, tangent), so every shape's mapping is
 // unmirrored (w = +1) and a texture appears unflipped when viewed from outside with v pointing up.
 
+// Texture coordinates of the unit direction from a sphere's centre, as the UV sphere and the
+// icosphere lay them out (the ray tracer's exact spheres use it too).
+glm::vec2 sphericalUv(glm::vec3 direction);
+
 // In the XZ plane, normal +Y, u along +X, v along -Z; subdivisions >= 1 quads per side.
 Mesh makePlane(float size, uint32_t subdivisions);
 // 24 vertices (hard edges), 12 triangles.

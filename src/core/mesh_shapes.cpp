@@ -55,15 +55,6 @@ glm::vec4 sphereTangent(float phi) {
     return {-std::cos(phi), 0.0f, std::sin(phi), 1.0f};
 }
 
-glm::vec2 sphericalUv(glm::vec3 direction) {
-    float phi = std::atan2(-direction.x, -direction.z);
-    if (phi < 0.0f) {
-        phi += kTwoPi;
-    }
-    const float u = std::min(phi / kTwoPi, 1.0f);
-    const float v = 1.0f - std::acos(std::clamp(direction.y, -1.0f, 1.0f)) / kPi;
-    return {u, v};
-}
 
 void appendPoleVertices(Mesh& mesh, float radius, uint32_t slices, bool north) {
     const glm::vec3 normal{0.0f, north ? 1.0f : -1.0f, 0.0f};
@@ -143,6 +134,16 @@ std::vector<uint32_t> subdivideOnSphere(std::vector<glm::vec3>& points, const st
 }
 
 }  // namespace
+
+glm::vec2 sphericalUv(glm::vec3 direction) {
+    float phi = std::atan2(-direction.x, -direction.z);
+    if (phi < 0.0f) {
+        phi += kTwoPi;
+    }
+    const float u = std::min(phi / kTwoPi, 1.0f);
+    const float v = 1.0f - std::acos(std::clamp(direction.y, -1.0f, 1.0f)) / kPi;
+    return {u, v};
+}
 
 Mesh makePlane(float size, uint32_t subdivisions) {
     assert(size > 0.0f);

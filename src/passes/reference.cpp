@@ -1,12 +1,14 @@
 #include "passes/reference.h"
 
 #include "core/errors.h"
+#include "core/raytracer.h"
 
 namespace shadelab {
 namespace {
 
 const std::vector<Reference>& references() {
   static const std::vector<Reference> table = {
+      traceReference(4, true),
       {"raster", "Phong, 4x tessellation, 4x MSAA",
        [](Renderer& renderer, const Scene& scene, uint32_t width, uint32_t height) {
          Scene fine = scene;
@@ -20,6 +22,21 @@ const std::vector<Reference>& references() {
 }
 
 }  // namespace
+
+Reference traceReference(uint32_t samplesPerPixel, bool shadows) {
+  return {"trace",
+          "Whitted ray tracer, " + std::to_string(samplesPerPixel) + " spp" +
+              (shadows ? "" : ", no shadows"),
+          [samplesPerPixel, shadows](Renderer&, const Scene& scene, uint32_t width,
+                                     uint32_t height) {
+            TraceSettings settings;
+            settings.width = width;
+            settings.height = height;
+            settings.samplesPerPixel = samplesPerPixel;
+            settings.shadows = shadows;
+            return RayTracer(scene).render(settings).image;
+          }};
+}
 
 const Reference& findReference(const std::string& name, const std::string& option) {
   for (const Reference& reference : references())

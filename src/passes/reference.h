@@ -1,7 +1,8 @@
 #pragma once
 // References the rasterised settings are measured against, by name: what
-// `compare`, `bench` and `render --quality` compare with. `raster` is Phong
-// at 4x tessellation with 4x MSAA; the ray tracer joins as `trace`.
+// `compare`, `bench` and `render --quality` compare with. `trace` is the CPU
+// Whitted ray tracer (core/raytracer.h) at 4 samples per pixel; `raster` is
+// Phong at 4x tessellation with 4x MSAA.
 #include <functional>
 #include <string>
 #include <vector>
@@ -20,5 +21,9 @@ struct Reference {
 
 // Throws InputError naming `option` and the references that exist.
 const Reference& findReference(const std::string& name, const std::string& option);
+
+// The ray tracer as a reference with other settings than the table's `trace`
+// (samplesPerPixel must be a square; see checkSamplesPerPixel).
+Reference traceReference(uint32_t samplesPerPixel, bool shadows);
 
 }  // namespace shadelab

@@ -1,0 +1,102 @@
+// shadelab trace: the CPU Whitted ray tracer's image of a scene, the ground
+// truth `compare` measures the rasterised modes against. No Vulkan device.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "core/image.h"
+#include "core/raytracer.h"
+#include "core/scene_loader.h"
+
+namespace shadelab {
+namespace {
+
+struct TraceOptions {
+  std::string scene;
+  std::string output;
+  std::string size = "1280x720";
+  uint32_t samplesPerPixel = 16;
+  uint32_t depth = 5;
+  uint32_t threads = 0;
+  std::string shadows = "on";
+};
+
+int runTrace(const TraceOptions& options) {
+  Size size = parseSize(options.size, "--size");
+  checkSamplesPerPixel(options.samplesPerPixel);
+  checkOutputPath(options.output);  // fail before the expensive work
+  Scene scene = loadScene(options.scene);
+  warnAboutUntracedTextures(scene);
+  TraceSettings settings;
+  settings.width = size.width;
+  settings.height = size.height;
+  settings.samplesPerPixel = options.samplesPerPixel;
+  settings.maxDepth = options.depth;
+  settings.threads = options.threads;
+  settings.shadows = options.shadows == "on";
+  // Progress on a terminal only, so logs and pipes get just the summary.
+  if (isatty(STDERR_FILENO))
+    settings.progress = [](float fraction) {
+      std::fprintf(stderr, "\rtracing: %3.0f%%%s", 100.0f * fraction, fraction >= 1.0f ? "\n" : "");
+    };
+
+  const auto start = std::chrono::steady_clock::now();
+  RayTracer tracer(scene);
+  const auto built = std::chrono::steady_clock::now();
+  TraceResult result = tracer.render(settings);
+  const auto done = std::chrono::steady_clock::now();
+  writeImage(result.image, options.output);
+
+  const double buildSeconds = std::chrono::duration<double>(built - start).count();
+  const double traceSeconds = std::chrono::duration<double>(done - built).count();
+  const TraceStats& stats = result.stats;
+  std::printf("wrote %s (%ux%u, scene %s, %u spp, depth %u)\n", options.output.c_str(), size.width,
+              size.height, scene.name.c_str(), settings.samplesPerPixel, settings.maxDepth);
+  std::printf(
+      "trace: %.3f s (+ %.3f s BVH build), %.2f Mrays/s: %llu primary, %llu shadow, "
+      "%llu reflected/refracted (%llu total internal reflections)\n",
+      traceSeconds, buildSeconds, double(stats.total()) / traceSeconds * 1e-6,
+      static_cast<unsigned long long>(stats.primaryRays),
+      static_cast<unsigned long long>(stats.shadowRays),
+      static_cast<unsigned long long>(stats.secondaryRays),
+      static_cast<unsigned long long>(stats.totalInternalReflections));
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
+  auto options = std::make_shared<TraceOptions>();
+  CLI::App* command =
+      app.add_subcommand("trace", "Ray trace a scene on the CPU (Whitted): the reference image");
+  command->add_option("scene", options->scene,
+                      "Built-in scene name or scene file (default: the built-in default scene)");
+  command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
+      ->required();
+  command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  command
+      ->add_option("--spp", options->samplesPerPixel,
+                   "Samples per pixel, a square (1, 4, 9, 16, ...): stratified, jittered by a "
+                   "fixed hash; 1 samples pixel centres")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 256u));
+  command
+      ->add_option("--depth", options->depth,
+                   "Reflection/refraction bounces after the primary ray (0: local shading)")
+      ->capture_default_str()
+      ->check(CLI::Range(0u, 64u));
+  command
+      ->add_option("--threads", options->threads,
+                   "Worker threads (0: one per hardware thread); the image does not depend on it")
+      ->capture_default_str()
+      ->check(CLI::Range(0u, 256u));
+  command->add_option("--shadows", options->shadows, "Shadow rays: on, or off (as the rasteriser)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
+  return [options] { return runTrace(*options); };
+}
+
+}  // namespace shadelab

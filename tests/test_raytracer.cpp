@@ -1,0 +1,321 @@
+// The ray tracer's pieces against hand-worked numbers: optics, exact
+// intersections (also under non-uniform scale), the BVH against brute force,
+// camera rays against the projection matrices, and shading against the C++
+// illumination equation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "core/bvh.h"
+#include "core/errors.h"
+#include "core/gpu_scene.h"
+#include "core/lighting.h"
+#include "core/ray.h"
+#include "core/raytracer.h"
+#include "core/trace_shapes.h"
+#include "core/transform.h"
+
+namespace shadelab {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance) {
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+  EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+TEST(Optics, MirrorDirectionReflectsAboutTheNormal) {
+  glm::vec3 d = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+  expectNear(mirrorDirection(d, {0, 1, 0}), glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f)), 1e-6f);
+}
+
+TEST(Optics, RefractionObeysSnellsLaw) {
+  const float eta = 1.0f / 1.5f;
+  for (float degrees : {0.0f, 20.0f, 45.0f, 80.0f}) {
+    const float angle = glm::radians(degrees);
+    const glm::vec3 d{std::sin(angle), -std::cos(angle), 0.0f};
+    std::optional<glm::vec3> t = refractDirection(d, {0, 1, 0}, eta);
+    ASSERT_TRUE(t.has_value()) << degrees;
+    EXPECT_NEAR(glm::length(*t), 1.0f, 1e-6f);
+    // n1 sin(theta1) = n2 sin(theta2), and the ray keeps going down.
+    EXPECT_NEAR(1.0f * std::sin(angle), 1.5f * t->x, 1e-6f) << degrees;
+    EXPECT_LT(t->y, 0.0f);
+  }
+}
+
+TEST(Optics, TotalInternalReflectionBeyondTheCriticalAngle) {
+  const float critical = std::asin(1.0f / 1.5f);  // 41.8 degrees, glass to air
+  const glm::vec3 normal{0, 1, 0};
+  auto at = [&](float angle) { return glm::vec3(std::sin(angle), -std::cos(angle), 0.0f); };
+  EXPECT_TRUE(refractDirection(at(critical - 0.01f), normal, 1.5f).has_value());
+  EXPECT_FALSE(refractDirection(at(critical + 0.01f), normal, 1.5f).has_value());
+  EXPECT_FALSE(refractDirection(glm::vec3(std::nanf("")), normal, 1.5f).has_value());
+}
+
+TEST(TraceShapes, SphereHitDistanceNormalAndUv) {
+  LocalHit hit;
+  ASSERT_TRUE(intersectSphere({{0, 0, 5}, {0, 0, -1}}, 1.0f, 0.0f, kInf, hit));
+  EXPECT_FLOAT_EQ(hit.t, 4.0f);
+  expectNear(hit.normal, {0, 0, 1}, 1e-6f);
+  EXPECT_NEAR(hit.uv.x, 0.5f, 1e-6f);  // the middle of the texture faces +Z
+  // From inside, the first crossing ahead is the far wall.
+  ASSERT_TRUE(intersectSphere({{0, 0, 0}, {0, 0, -1}}, 2.0f, 0.0f, kInf, hit));
+  EXPECT_FLOAT_EQ(hit.t, 2.0f);
+  EXPECT_FALSE(intersectSphere({{0, 1.01f, 5}, {0, 0, -1}}, 1.0f, 0.0f, kInf, hit));
+  EXPECT_EQ(countInRange(sphereCrossings({{0, 0, 5}, {0, 0, -1}}, 1.0f), 0.0f, kInf), 2u);
+}
+
+TEST(TraceShapes, PlaneIsTheFiniteSquare) {
+  LocalHit hit;
+  ASSERT_TRUE(intersectPlane({{0.9f, 2, -0.9f}, {0, -1, 0}}, 2.0f, 0.0f, kInf, hit));
+  EXPECT_FLOAT_EQ(hit.t, 2.0f);
+  EXPECT_NEAR(hit.uv.x, 0.95f, 1e-6f);  // u along +x, v along -z, as makePlane
+  EXPECT_NEAR(hit.uv.y, 0.95f, 1e-6f);
+  EXPECT_FALSE(intersectPlane({{1.1f, 2, 0}, {0, -1, 0}}, 2.0f, 0.0f, kInf, hit));
+}
+
+TEST(TraceShapes, BoxBySlabsFromOutsideAndInside) {
+  LocalHit hit;
+  const glm::vec3 half{1.0f, 2.0f, 3.0f};
+  ASSERT_TRUE(intersectBox({{5, 0.5f, 0.5f}, {-1, 0, 0}}, half, 0.0f, kInf, hit));
+  EXPECT_FLOAT_EQ(hit.t, 4.0f);
+  expectNear(hit.normal, {1, 0, 0}, 0.0f);
+  ASSERT_TRUE(intersectBox({{0, 0, 0}, {0, 0, 1}}, half, 0.0f, kInf, hit));
+  EXPECT_FLOAT_EQ(hit.t, 3.0f);  // the exit through +z
+  expectNear(hit.normal, {0, 0, 1}, 0.0f);
+  EXPECT_FALSE(intersectBox({{5, 2.5f, 0}, {-1, 0, 0}}, half, 0.0f, kInf, hit));
+}
+
+// One object on its own: the tracer's hit in world space.
+Scene oneObject(ShapeDesc shape, glm::mat4 transform) {
+  Scene scene;
+  scene.background = {0.1f, 0.2f, 0.3f};
+  uint32_t mesh = scene.addShape(shape);
+  scene.objects.push_back({"object", mesh, transform, Material{}});
+  return scene;
+}
+
+TEST(RayTracer, NonUniformScaleIntersectsTheEllipsoidWithItsTrueNormal) {
+  ShapeDesc sphere{ShapeKind::UvSphere};
+  sphere.radius = 1.0f;
+  Scene scene = oneObject(sphere, translation({1, 0, 0}) * scaling({2, 1, 1}));
+  RayTracer tracer(scene);
+  // x^2/4 + y^2 = 1 (shifted by 1 in x); at x' = sqrt(2), y = sqrt(0.5) the
+  // outward normal is along the gradient (x'/4, y) = (0.354, 0.707).
+  const float x = std::sqrt(2.0f), y = std::sqrt(0.5f);
+  std::optional<SurfaceHit> hit = tracer.intersect({{1 + x, y, 5}, {0, 0, -1}}, 0.0f, kInf);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->t, 5.0f, 1e-5f);
+  expectNear(hit->shadingNormal, glm::normalize(glm::vec3(x / 4.0f, y, 0.0f)), 1e-5f);
+  EXPECT_TRUE(hit->frontFace);
+  hit = tracer.intersect({{5, 0, 0}, {-1, 0, 0}}, 0.0f, kInf);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->t, 2.0f, 1e-5f);  // the surface at x = 1 + 2
+}
+
+TEST(RayTracer, RotatedScaledBoxIsIntersectedInObjectSpace) {
+  ShapeDesc box{ShapeKind::Box};
+  box.halfExtents = glm::vec3(0.5f);
+  // Scaled to 2 x 1 x 1 along x, then turned 90 degrees about y: 2 deep in z.
+  RayTracer tracer(oneObject(box, rotationY(glm::radians(90.0f)) * scaling({2, 1, 1})));
+  std::optional<SurfaceHit> hit = tracer.intersect({{0.2f, 0.1f, 5}, {0, 0, -1}}, 0.0f, kInf);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_NEAR(hit->t, 4.0f, 1e-5f);
+  expectNear(hit->shadingNormal, {0, 0, 1}, 1e-5f);
+  EXPECT_FALSE(tracer.intersect({{0.6f, 0.1f, 5}, {0, 0, -1}}, 0.0f, kInf).has_value());
+}
+
+// Shadow rays pass transparent surfaces dimmed by kt at each crossing.
+TEST(RayTracer, GlassCastsALighterShadowThanAnOpaqueBall) {
+  ShapeDesc sphere{ShapeKind::UvSphere};
+  Scene scene = oneObject(sphere, glm::mat4(1.0f));
+  const Ray throughBall{{0, -5, 0}, {0, 1, 0}};
+  scene.objects[0].material.transparency = 0.5f;
+  EXPECT_FLOAT_EQ(RayTracer(scene).transmittance(throughBall, kInf), 0.25f);  // in and out
+  scene.objects[0].material.transparency = 0.0f;
+  EXPECT_EQ(RayTracer(scene).transmittance(throughBall, kInf), 0.0f);
+  EXPECT_EQ(RayTracer(scene).transmittance(throughBall, 3.5f), 1.0f);  // ends before the ball
+}
+
+TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
+  ShapeDesc sphere{ShapeKind::Icosphere};
+  sphere.radius = 1.0f;
+  sphere.tessellation = 1;
+  RayTracer tracer(oneObject(sphere, glm::mat4(1.0f)));
+  std::optional<SurfaceHit> hit = tracer.intersect({{0, 0, 0}, {0, 1, 0}}, 0.0f, kInf);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_FALSE(hit->frontFace);
+  expectNear(hit->geometricNormal, {0, -1, 0}, 1e-6f);
+}
+
+TEST(Bvh, ClosestHitAndCountMatchBruteForceOnTheTeapot) {
+  ShapeDesc teapot{ShapeKind::Teapot};
+  teapot.tessellation = 6;
+  const Mesh mesh = buildShape(teapot);
+  const Bvh bvh(mesh);
+  EXPECT_LE(bvh.largestLeaf(), 8u);
+  EXPECT_LT(bvh.depth(), 40u);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int hits = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Ray ray{glm::vec3(4 * unit(random), 1.5f + 2 * unit(random), 6.0f),
+                  glm::vec3(0.3f * unit(random), 0.3f * unit(random), -1.0f)};
+    float nearest = kInf;
+    uint32_t count = 0, nearestTriangle = 0;
+    for (uint32_t t = 0; t < mesh.triangleCount(); ++t) {
+      const glm::vec3 a = mesh.vertices[mesh.indices[3 * t]].position;
+      const glm::vec3 b = mesh.vertices[mesh.indices[3 * t + 1]].position;
+      const glm::vec3 c = mesh.vertices[mesh.indices[3 * t + 2]].position;
+      TriangleHit h;
+      if (intersectTriangle(ray, a, b - a, c - a, 0.0f, kInf, h)) {
+        ++count;
+        if (h.t < nearest) nearest = h.t, nearestTriangle = t;
+      }
+    }
+    TriangleHit hit;
+    const bool found = bvh.intersect(ray, 0.0f, kInf, hit);
+    ASSERT_EQ(found, count > 0) << i;
+    EXPECT_EQ(bvh.countHits(ray, 0.0f, kInf), count) << i;
+    if (!found) continue;
+    ++hits;
+    EXPECT_EQ(hit.t, nearest) << i;
+    EXPECT_EQ(hit.triangle, nearestTriangle) << i;
+  }
+  EXPECT_GT(hits, 50);  // the rays really test the teapot
+}
+
+TEST(Bvh, BarycentricsReconstructTheHitPoint) {
+  const glm::vec3 v0{0, 0, 0}, v1{2, 0, 0}, v2{0, 2, 0};
+  TriangleHit hit;
+  ASSERT_TRUE(
+      intersectTriangle({{0.5f, 0.25f, 3}, {0, 0, -1}}, v0, v1 - v0, v2 - v0, 0, kInf, hit));
+  EXPECT_FLOAT_EQ(hit.t, 3.0f);
+  EXPECT_FLOAT_EQ(hit.u, 0.25f);
+  EXPECT_FLOAT_EQ(hit.v, 0.125f);
+}
+
+TEST(RayTracer, MeshesShadeWithInterpolatedVertexNormals) {
+  Mesh triangle;
+  triangle.vertices = {{{0, 0, 0}, {0, 0, 1}, {}, {}},
+                       {{2, 0, 0}, glm::normalize(glm::vec3(1, 0, 1)), {}, {}},
+                       {{0, 2, 0}, glm::normalize(glm::vec3(0, 1, 1)), {}, {}}};
+  triangle.indices = {0, 1, 2};
+  Scene scene;
+  scene.objects.push_back({"triangle", scene.addMesh(triangle), glm::mat4(1.0f), Material{}});
+  RayTracer tracer(scene);
+  std::optional<SurfaceHit> hit = tracer.intersect({{0.5f, 0.5f, 3}, {0, 0, -1}}, 0.0f, kInf);
+  ASSERT_TRUE(hit.has_value());
+  const glm::vec3 expected = 0.5f * glm::vec3(0, 0, 1) +
+                             0.25f * glm::normalize(glm::vec3(1, 0, 1)) +
+                             0.25f * glm::normalize(glm::vec3(0, 1, 1));
+  expectNear(hit->shadingNormal, glm::normalize(expected), 1e-6f);
+  expectNear(hit->geometricNormal, {0, 0, 1}, 1e-6f);
+}
+
+// The camera ray through a pixel projects back onto that pixel, from depth 0
+// to depth 1, with the very matrices the rasteriser uses.
+TEST(CameraRays, UnprojectExactlyAsTheProjectionMatrix) {
+  for (Projection projection :
+       {Projection::Perspective, Projection::Frustum, Projection::Orthographic}) {
+    Camera camera;
+    camera.projection = projection;
+    camera.eye = {1, 2, 6};
+    camera.left = -0.6f, camera.right = 0.9f, camera.bottom = -0.4f, camera.top = 0.5f;
+    const CameraRays rays(camera, 64, 36);
+    const glm::mat4 clip = camera.projectionMatrix(64.0f / 36.0f) * camera.viewMatrix();
+    for (glm::vec2 pixel : {glm::vec2(0.5f, 0.5f), glm::vec2(40.25f, 10.75f)}) {
+      const Ray ray = rays.through(pixel.x, pixel.y);
+      for (float t : {0.0f, 1.0f}) {
+        glm::vec4 p = clip * glm::vec4(ray.at(t), 1.0f);
+        glm::vec3 ndc = glm::vec3(p) / p.w;
+        EXPECT_NEAR((ndc.x + 1) * 32.0f, pixel.x, 2e-3f) << int(projection);
+        EXPECT_NEAR((ndc.y + 1) * 18.0f, pixel.y, 2e-3f) << int(projection);
+        EXPECT_NEAR(ndc.z, t, 1e-4f) << int(projection);
+      }
+    }
+  }
+}
+
+// A camera ray's colour is lighting.cpp's equation in the rasteriser's eye
+// space, at the exact surface point.
+TEST(RayTracer, LocalShadingIsTheIlluminationEquationInEyeSpace) {
+  ShapeDesc sphere{ShapeKind::UvSphere};
+  Scene scene = oneObject(sphere, glm::mat4(1.0f));
+  scene.objects[0].material = {{0.1f, 0.05f, 0.0f}, {0.6f, 0.3f, 0.2f}, {0.5f, 0.5f, 0.4f}, 24.0f};
+  scene.ambient = {0.3f, 0.3f, 0.3f};
+  scene.lights = {{LightType::Point, {2, 3, 4}, {}, {0.9f, 0.8f, 0.7f}, {1.0f, 0.1f, 0.02f}},
+                  {LightType::Directional, {}, {-1, -0.5f, -1}, {0.2f, 0.2f, 0.3f}, {1, 0, 0}}};
+  scene.camera.eye = {0.5f, 1.0f, 5.0f};
+  RayTracer tracer(scene);
+  const CameraRays rays(scene.camera, 32, 32);
+  const Ray ray = rays.through(17.5f, 14.5f);
+  std::optional<SurfaceHit> hit = tracer.intersect(ray, 0.0f, 1.0f);
+  ASSERT_TRUE(hit.has_value());
+  TraceStats stats;
+  const glm::vec3 traced =
+      tracer.traceRay(ray, 1.0f, rays.viewer(), 0, 1.0f, TraceSettings{}, stats);
+  const glm::mat4 view = scene.camera.viewMatrix();
+  const gpu::FrameData frame = makeFrameData(scene, view, glm::mat4(1.0f));
+  const glm::vec3 expected =
+      illuminate(frame, 2, glm::vec3(view * glm::vec4(hit->position, 1.0f)),
+                 glm::mat3(view) * hit->shadingNormal, scene.objects[0].material, false);
+  expectNear(traced, expected, 1e-5f);
+  EXPECT_GT(expected.r, 0.2f);  // lit, not just ambient
+  EXPECT_EQ(stats.primaryRays, 1u);
+  EXPECT_EQ(stats.shadowRays, 2u);
+}
+
+// Two facing mirrors and a ray bouncing between them: it stops at the depth
+// limit, or where its weight kr^k falls below the contribution threshold.
+TEST(RayTracer, RecursionStopsAtTheDepthOrTheContributionThreshold) {
+  auto bounces = [](float reflectivity, uint32_t maxDepth) {
+    Scene scene;
+    ShapeDesc plane{ShapeKind::Plane};
+    plane.size = 10.0f;
+    const uint32_t mesh = scene.addShape(plane);
+    Material mirror;
+    mirror.reflectivity = reflectivity;
+    scene.objects.push_back({"low", mesh, glm::mat4(1.0f), mirror});
+    scene.objects.push_back({"high", mesh, translation({0, 2, 0}), mirror});
+    RayTracer tracer(scene);
+    TraceSettings settings;
+    settings.maxDepth = maxDepth;
+    TraceStats stats;
+    const Ray ray{{0, 1, 0}, {0, -1, 0}};
+    const glm::vec3 colour = tracer.traceRay(ray, kInf, ray.origin, 0, 1.0f, settings, stats);
+    EXPECT_TRUE(std::isfinite(colour.r));
+    return stats.secondaryRays;
+  };
+  EXPECT_EQ(bounces(1.0f, 5), 5u);
+  EXPECT_EQ(bounces(1.0f, 0), 0u);
+  EXPECT_EQ(bounces(0.5f, 20), 9u);    // 0.5^9 = 1/512 is the last ray worth tracing
+  EXPECT_EQ(bounces(0.001f, 20), 0u);  // below 1/512 at once
+}
+
+TEST(RayTracer, ProgressRisesInTenthsToOne) {
+  ShapeDesc sphere{ShapeKind::UvSphere};
+  RayTracer tracer(oneObject(sphere, glm::mat4(1.0f)));
+  TraceSettings settings;
+  settings.width = 8, settings.height = 40, settings.threads = 1;
+  std::vector<float> reports;
+  settings.progress = [&](float fraction) { reports.push_back(fraction); };
+  tracer.render(settings);
+  ASSERT_EQ(reports.size(), 10u);  // 0.1 .. 0.9 as rows complete, then 1
+  EXPECT_EQ(reports.back(), 1.0f);
+  for (size_t i = 1; i < reports.size(); ++i) EXPECT_GT(reports[i], reports[i - 1]);
+}
+
+TEST(RayTracer, SampleCountsMustBeSquares) {
+  EXPECT_NO_THROW(checkSamplesPerPixel(1));
+  EXPECT_NO_THROW(checkSamplesPerPixel(16));
+  EXPECT_THROW(checkSamplesPerPixel(8), InputError);
+  EXPECT_THROW(checkSamplesPerPixel(0), InputError);
+}
+
+}  // namespace
+}  // namespace shadelab
