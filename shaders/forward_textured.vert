@@ -3,6 +3,7 @@
 // texture coordinate and the eye-space tangent frame. Gouraud lights here,
 // keeping the part the diffuse texel scales apart from the specular part.
 #extension GL_GOOGLE_include_directive : require
+#include "environment.glsl"
 #include "texturing.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -18,6 +19,11 @@ layout(location = 4) out vec2 outUv;
 layout(location = 5) out vec4 outTangent;   // eye space xyz, w = handedness
 layout(location = 6) out vec3 outSpecular;  // Gouraud: sum f_att Ip ks (R.V)^n
 layout(location = 7) flat out vec3 outFlatSpecular;
+// Environment directions (environment.glsl): per vertex for Gouraud, per triangle for flat.
+layout(location = 8) out vec4 outEnvReflected;
+layout(location = 9) out vec4 outEnvRefracted;
+layout(location = 10) flat out vec4 outFlatEnvReflected;
+layout(location = 11) flat out vec4 outFlatEnvRefracted;
 
 void main() {
   ObjectData object = objects[draw.object.x];
@@ -35,5 +41,12 @@ void main() {
   if (shadingModel == SHADING_GOURAUD) illuminateParts(eye.xyz, outNormal, outColor, outSpecular);
   outFlatColor = vec3(0.0);
   outFlatSpecular = vec3(0.0);
+  EnvironmentDirections environment = EnvironmentDirections(vec4(0.0), vec4(0.0));
+  if (environmentEnabled && shadingModel == SHADING_GOURAUD)
+    environment = environmentDirections(eye.xyz, outNormal, draw.optics.z);
+  outEnvReflected = environment.reflected;
+  outEnvRefracted = environment.refracted;
+  outFlatEnvReflected = vec4(0.0);
+  outFlatEnvRefracted = vec4(0.0);
   gl_Position = frame.projection * eye;
 }

@@ -21,6 +21,11 @@ using mat4 = glm::mat4;
 #define BINDING_OBJECTS 1  // storage buffer: ObjectData[]
 #define BINDING_ENVIRONMENT 2  // combined image sampler: the environment cube map
 
+// Compute passes that build the environment cube (their own set 0)
+#define BINDING_CUBE_TARGET 0  // storage image2DArray: one mip level of the cube, layer = face
+#define BINDING_PANORAMA 1     // combined image sampler: the equirectangular panorama
+#define CUBE_BUILD_GROUP_SIZE 8
+
 // Descriptor set 1, one per material: its textures (a 1x1 dummy when a slot
 // is empty, since lavapipe crashes on never-written descriptors)
 #define BINDING_DIFFUSE_MAP 0
@@ -39,6 +44,8 @@ using mat4 = glm::mat4;
 #define SPEC_POINT_LIGHTS 1
 #define SPEC_DIRECTIONAL_LIGHTS 2
 #define SPEC_ATTENUATED_POINT_LIGHTS 3
+// Environment term in the forward pass (id 8: clear of the ids other features add).
+#define SPEC_ENVIRONMENT 8
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2
@@ -61,6 +68,7 @@ struct FrameData {
   vec4 ambient;      // rgb = Ia
   ivec4 lightCount;  // x = point lights, y = directional lights (the shaders use the specialization constants)
   GpuLight lights[MAX_LIGHTS];  // the point lights first, then the directional ones
+  mat4 viewToWorld;  // inverse view rotation: eye-space directions to world space for the cube map
 };
 
 // Per object and per frame: its matrices (read by the vertex stage only).
@@ -85,6 +93,29 @@ struct DrawConstants {
   vec4 ks;      // rgb, w = shininess n
   ivec4 object; // x = index into ObjectData[], y = TEXTURE_* flags
   vec4 texturing;  // xy = uv scale (repeats), z = bump scale
+  vec4 optics;   // environment term: x = reflectivity kr, y = transparency kt, z = ior
+};
+
+// The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/environment.cpp).
+struct SkyParameters {
+  vec4 zenith;        // rgb, straight up
+  vec4 horizon;       // rgb, at the horizon (both halves)
+  vec4 ground;        // rgb, straight down
+  vec4 sunDirection;  // xyz = unit direction towards the sun, w = cos(angular radius)
+  vec4 sunRadiance;   // rgb = the disc's radiance, w = cos(0.5 * angular radius): soft edge starts
+  ivec4 face;         // x = cube face size in texels
+};
+
+// The skybox pass, as push constants.
+struct SkyboxConstants {
+  mat4 clipToWorld;  // inverse(projection * view rotation): clip position -> world direction
+  vec4 depth;        // x = the far plane's depth (what the depth buffer is cleared to), y = the near's
+};
+
+// Equirectangular panorama -> cube conversion.
+struct PanoramaParameters {
+  ivec4 face;   // x = cube face size in texels
+  vec4 sampling;  // x = panorama mip level, y = rotation about +y (radians), z = intensity
 };
 
 #ifdef __cplusplus

@@ -206,6 +206,33 @@ TEST_F(Cli, MalformedJsonSceneNamesFileAndField) {
   EXPECT_EQ(filesLeft(), 1u);  // only the scene file itself
 }
 
+TEST_F(Cli, MissingPanoramaNamesFieldAndFileAndWritesNothing) {
+  std::ofstream(out("scene.json"))
+      << R"({"environment": {"type": "equirect", "file": "gone.hdr"}, "objects": []})";
+  CommandResult r = run("render " + out("scene.json") + " -o " + out("a.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("environment.file: image '" + out("gone.hdr") + "' does not exist"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(filesLeft(), 1u);  // only the scene file: no image, no temporary
+}
+
+TEST_F(Cli, EnvOnAndOffRenderTheStudioScene) {
+  std::string scene = std::string(SHADELAB_ASSET_DIR) + "/scenes/studio.json";
+  CommandResult on = run("render " + scene + " -o " + out("on.png") + " --size 64x36 --env on");
+  ASSERT_EQ(on.exitCode, 0) << on.output;
+  CommandResult off = run("render " + scene + " -o " + out("off.png") + " --size 64x36 --env off");
+  ASSERT_EQ(off.exitCode, 0) << off.output;
+  EXPECT_NE(readText(out("on.png")), readText(out("off.png")));
+}
+
+TEST_F(Cli, BadEnvValueIsAUsageError) {
+  CommandResult r = run("render env -o " + out("a.png") + " --env maybe");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("--env"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
 TEST_F(Cli, TessellationOutOfRangeIsAUsageError) {
   CommandResult r = run("render -o " + out("a.png") + " --tess 0");
   EXPECT_EQ(r.exitCode, 2) << r.output;

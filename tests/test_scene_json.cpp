@@ -345,7 +345,7 @@ const ErrorCase kErrorCases[] = {
   {"ObjectsNotAnArray", R"({"objects": {}})", {"objects: expected an array of objects, got {}"}},
   {"UnknownTopLevelField", noObjects(R"("colour": 1)"),
    {"scene.json: colour: unknown field \"colour\", expected one of camera, ambient, background,"
-    " lights, materials, objects"}},
+    " environment, lights, materials, objects"}},
   {"UnknownObjectField", oneObject(R"("shape": "sphere", "colour": [1, 0, 0])"),
    {"objects[0].colour: unknown field \"colour\"", "material", "radius", "tessellation"}},
   {"MaterialOnAGroup", oneObject(R"("material": "x", "children": [{"shape": "box"}])"),

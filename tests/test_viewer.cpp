@@ -159,11 +159,21 @@ TEST_F(Viewer, SplitScreenMatchesHeadlessSplitAndReportsErrors) {
   }
 }
 
-TEST_F(Viewer, UnavailableFeaturesSaySo) {
-  CommandResult r = view("key E\nframes 1\n");
+// E toggles the environment term and the skybox: each state matches the
+// headless render with --env on / off, and the two differ.
+TEST_F(Viewer, EnvironmentToggleMatchesHeadlessRender) {
+  CommandResult r = view(
+      "key O\nframes 2\nscreenshot env-on.png\nkey E\nframes 2\nscreenshot env-off.png\n", "env");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_NE(r.output.find("environment mapping: not available in this build"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("environment mapping off"), std::string::npos) << r.output;
+  Scene scene = builtinScene("env");
+  ImageU8 on = readImageU8(path("env-on.png"));
+  ImageU8 off = readImageU8(path("env-off.png"));
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong, 1};
+  EXPECT_TRUE(matchesImage(render(scene, settings), on));
+  settings.environment = false;
+  EXPECT_TRUE(matchesImage(render(scene, settings), off));
+  EXPECT_FALSE(matchesImage(on, off));
 }
 
 TEST_F(Viewer, AutoTessellationMatchesHeadlessTessAuto) {
@@ -327,8 +337,9 @@ void replaceInFile(const fs::path& file, const std::string& from, const std::str
 TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   fs::path shaders = shaderCopy(dir);
   // The edited shader swaps red and blue: a change that is easy to measure.
-  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, draw.kd.w);",
-                "outColor = vec4(color.bgr, draw.kd.w);");
+  replaceInFile(shaders / "forward.frag",
+                "outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);",
+                "outColor = vec4(color.bgr, environmentEnabled ? 1.0 : draw.kd.w);");
   CommandResult r =
       view("key O\nframes 2\nscreenshot before.png\nkey R\nframes 2\nscreenshot after.png\n", "",
            "SHADELAB_SHADER_DIR=" + shaders.string());
@@ -354,7 +365,8 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
 
 TEST_F(Viewer, ShaderCompileErrorIsShownAndLastGoodPipelineKept) {
   fs::path shaders = shaderCopy(dir);
-  replaceInFile(shaders / "forward.frag", "outColor = vec4(color, draw.kd.w);",
+  replaceInFile(shaders / "forward.frag",
+                "outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);",
                 "outColor = colour;");
   CommandResult r = view("key O\nkey R\nframes 2\nscreenshot after.png\n", "",
                          "SHADELAB_SHADER_DIR=" + shaders.string());

@@ -30,6 +30,7 @@ struct RenderOptions {
   float tessellationError = 0.5f;
   float simplify = 0.0f;
   uint32_t msaa = 1;
+  std::string environment = "on";
   std::string filter;  // empty: each material's own sampler
   std::string bump = "on";
   bool mipTint = false;
@@ -181,6 +182,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     RenderSettings settings{size.width, size.height, point.model, options.frames};
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
+    settings.environment = options.environment == "on";
     settings.textures = textures;
     result = renderer.renderToImage(scene, settings);
   }
@@ -230,6 +232,11 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
+  command->add_option("--env", options->environment,
+                      "Environment mapping (reflections, refraction, skybox) when the scene has "
+                      "an environment: on or off")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   command->add_option("--filter", options->filter,
                       "Texture filter for every texture, overriding the materials' samplers: "
                       "nearest (base level, no mipmaps), bilinear (nearest mip level), "

@@ -12,6 +12,8 @@ enum class ImageUse {
   TransferSource,    // copied or blitted from
   TransferDest,      // copied or blitted to
   ShaderRead,        // sampled by fragment shaders
+  ComputeWrite,      // written as a storage image by compute shaders
+  ComputeRead,       // sampled by compute shaders
   Present,           // handed to the presentation engine
   Acquired,          // a swapchain image just acquired: contents discarded; the
                      // acquire semaphore is waited on at the transfer stage

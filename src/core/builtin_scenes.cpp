@@ -200,6 +200,46 @@ Scene denseScene() {
   return scene;
 }
 
+// Environment mapping: a mirror sphere, a glass sphere (refraction with
+// Fresnel) and a chrome-like teapot under the procedural sky, on a matte
+// floor. The sun, low ahead on the left, and the directional light agree;
+// a point light behind the camera fills the fronts.
+Scene environmentScene() {
+  Scene scene;
+  scene.name = "env";
+  scene.camera.eye = {0.0f, 2.2f, 8.5f};
+  scene.camera.at = {0.0f, 1.3f, 0.0f};
+  scene.camera.fovyDegrees = 40.0f;
+  scene.ambient = glm::vec3(0.4f);
+  scene.background = {0.5f, 0.6f, 0.75f};       // with --env off
+  glm::vec3 sunlight{0.416f, -0.174f, 0.893f};  // from 10 degrees up, 25 degrees left of ahead
+  scene.environment.kind = EnvironmentKind::Sky;
+  scene.environment.sky.sunDirection = sunlight;
+  scene.environment.source = "procedural sky";
+  scene.lights.push_back(directionalLight(sunlight, {1.0f, 0.95f, 0.85f}));
+  scene.lights.push_back(pointLight({-3.0f, 4.0f, 9.0f}, glm::vec3(0.6f), {1.0f, 0.0f, 0.0f}));
+
+  uint32_t floor = scene.addShape(plane(16.0f, 8));
+  uint32_t sphere = scene.addShape(uvSphere(1.0f, 64));
+  uint32_t pot = scene.addShape(teapot(8));
+  scene.objects.push_back(
+      {"floor", floor, glm::mat4(1.0f), material({0.45f, 0.42f, 0.38f}, glm::vec3(0.05f), 8.0f)});
+  Material mirror = material(glm::vec3(0.02f), glm::vec3(0.8f), 256.0f);
+  mirror.reflectivity = 0.9f;
+  scene.objects.push_back({"mirror", sphere, translation({-2.6f, 1.0f, 0.3f}), mirror});
+  Material glass = material(glm::vec3(0.0f), glm::vec3(0.9f), 256.0f);
+  glass.transparency = 0.95f;
+  glass.ior = 1.5f;
+  scene.objects.push_back({"glass", sphere, translation({2.6f, 1.0f, 0.3f}), glass});
+  Material chrome = material({0.3f, 0.22f, 0.12f}, glm::vec3(0.9f), 128.0f);
+  chrome.reflectivity = 0.6f;
+  scene.objects.push_back({"teapot", pot,
+                           translation({0.0f, 0.0f, -0.8f}) * rotationY(glm::radians(-30.0f)) *
+                               scaling(glm::vec3(0.6f)),
+                           chrome});
+  return scene;
+}
+
 // The ray tracer's showcase (Whitted 1980): a mirror sphere and a glass
 // sphere (ior 1.5) over a plain floor, a matte box and sphere behind them to
 // be seen in the mirror and through the glass, under a point light and a
@@ -308,6 +348,7 @@ const std::map<std::string, std::function<Scene()>>& registry() {
       {"bump", bumpScene},
       {"default", defaultScene},
       {"dense", denseScene},
+      {"env", environmentScene},
       {"highlight", [] { return highlightScene(1); }},
       {"mip-plane", mipPlaneScene},
       {"spheres", spheresScene},

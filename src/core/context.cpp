@@ -168,6 +168,8 @@ void Context::createDevice(const ContextOptions& options) {
   VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   features13.dynamicRendering = VK_TRUE;
   features13.synchronization2 = VK_TRUE;
+  // glslang's SPIR-V 1.6 compute shaders declare their group size with LocalSizeId.
+  features13.maintenance4 = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features13};
   // Flat shading uses a geometry shader; the rest are optional and used when offered.
   if (!features_.geometryShader) throw VulkanError("device lacks geometryShader (flat shading)");

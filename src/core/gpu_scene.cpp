@@ -19,13 +19,19 @@ static_assert(offsetof(gpu::GpuLight, type) == 48);
 static_assert(offsetof(gpu::FrameData, ambient) == 64);
 static_assert(offsetof(gpu::FrameData, lightCount) == 80);
 static_assert(offsetof(gpu::FrameData, lights) == 96);
-static_assert(sizeof(gpu::FrameData) == 96 + 64 * MAX_LIGHTS);
+static_assert(offsetof(gpu::FrameData, viewToWorld) == 96 + 64 * MAX_LIGHTS);
+static_assert(sizeof(gpu::FrameData) == 96 + 64 * MAX_LIGHTS + 64);
 static_assert(offsetof(gpu::ObjectData, normalMatrix) == 64);
 static_assert(sizeof(gpu::ObjectData) == 128);
 static_assert(offsetof(gpu::DrawConstants, kd) == 16);
 static_assert(offsetof(gpu::DrawConstants, object) == 48);
 static_assert(offsetof(gpu::DrawConstants, texturing) == 64);
-static_assert(sizeof(gpu::DrawConstants) == 80);  // within the 128 bytes Vulkan guarantees
+static_assert(offsetof(gpu::DrawConstants, optics) == 80);
+static_assert(sizeof(gpu::DrawConstants) == 96);  // within the 128 bytes Vulkan guarantees
+static_assert(sizeof(gpu::SkyParameters) == 96);
+static_assert(offsetof(gpu::SkyParameters, face) == 80);
+static_assert(sizeof(gpu::SkyboxConstants) == 80);
+static_assert(sizeof(gpu::PanoramaParameters) == 32);
 
 namespace {
 
@@ -109,6 +115,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
                    (material.heightMap.present() ? TEXTURE_HEIGHT : 0);
     draw.constants.object = glm::ivec4(int(i), maps, 0, 0);
     draw.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, 0.0f);
+    draw.constants.optics =
+        glm::vec4(material.reflectivity, material.transparency, material.ior, 0.0f);
     draw.textured = maps != 0;
     // UV-projected copies share the mesh's positions, so its box.
     draw.worldBounds = transformBounds(meshBounds[object.mesh], object.transform);
@@ -161,6 +169,8 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
   gpu::FrameData frame{};
   frame.projection = projection;
   frame.ambient = glm::vec4(scene.ambient, 0.0f);
+  // The view is a rigid lookAt: its rotation's inverse is the transpose.
+  frame.viewToWorld = glm::mat4(glm::transpose(glm::mat3(view)));
   LightLayout layout = lightLayoutOf(scene);
   frame.lightCount = glm::ivec4(int(layout.point), int(layout.directional), 0, 0);
   uint32_t nextPoint = 0, nextDirectional = layout.point;

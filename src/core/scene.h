@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/environment.h"
 #include "core/mesh.h"
 #include "core/shape.h"
 
@@ -107,6 +108,7 @@ struct Scene {
   Camera camera;
   glm::vec3 ambient{1.0f};     // Ia
   glm::vec3 background{0.0f};  // linear clear colour
+  Environment environment;     // what surrounds the scene; none: the background colour
   std::vector<Light> lights;
   std::vector<Mesh> meshes;       // what is drawn
   std::vector<ShapeDesc> shapes;  // parallel to meshes: how each was built (Custom: loaded)

@@ -30,6 +30,24 @@
 //             orthographic: the sides of the view volume; left < right, bottom < top).
 // ambient     Ia, [r, g, b] or one number for grey; default 1.
 // background  the linear clear colour, [r, g, b] or a number; default 0.
+// environment what surrounds the scene at infinity, drawn behind it (the skybox) and seen in
+//             reflective and transparent materials; default none (the background colour).
+//             {"type": "none"}
+//             {"type": "sky", "zenith": [0.12, 0.3, 0.75], "horizon": [0.75, 0.82, 0.95],
+//              "ground": [0.22, 0.2, 0.18], "sun_direction": [-0.4, -0.6, -0.7] (the way sunlight
+//              travels, as for a directional light), "sun_size": 3 (angular diameter in degrees,
+//              0..90, 0: no sun), "sun_intensity": 20 (the disc's radiance)}: a gradient, sqrt in
+//              the elevation, from horizon to zenith above and to ground below;
+//             {"type": "equirect", "file": "sky.hdr", "rotation": 0}: an equirectangular
+//              panorama (JPEG/PNG decoded from sRGB, HDR/EXR linear); its centre looks along -z,
+//              its top straight up; "rotation" turns it about +y in degrees (counter-clockwise
+//              seen from above);
+//             {"type": "cube", "faces": ["px.png", "nx.png", "py.png", "ny.png", "pz.png",
+//              "nz.png"]}: six square faces of one size in Vulkan's cube layout.
+//             Files are relative to the scene file's folder. Every type but "none" may have
+//             "intensity" (>= 0, default 1, multiplies it); sky and equirect may have
+//             "resolution", the cube face size (a power of two, 16..2048; default 512 for the
+//             sky, a panorama's width / 4 rounded up to a power of two within 64..2048).
 // lights      at most 8 (MAX_LIGHTS, the renderer's limit). "type" is "point" (default) or
 //             "directional". A point light needs "position" [x, y, z] and may have
 //             "attenuation" [a, b, c] for f_att = 1 / (a + b d + c d^2): all >= 0, not all 0,
@@ -125,6 +143,7 @@
 
 #include "core/errors.h"
 #include "core/gltf_loader.h"
+#include "core/scene_json_environment.h"
 #include "core/scene_json_fields.h"
 #include "core/scene_json_textures.h"
 #include "core/transform.h"
@@ -557,12 +576,16 @@ nlohmann::json parseDocument(std::string_view text, const std::string& source) {
 Scene parseSceneJson(std::string_view text, const std::string& sourceName) {
   nlohmann::json document = parseDocument(text, sourceName);
   Field root(document, "", sourceName);
-  root.expectObject({"camera", "ambient", "background", "lights", "materials", "objects"});
+  root.expectObject(
+      {"camera", "ambient", "background", "environment", "lights", "materials", "objects"});
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
   if (auto f = root.optional("camera")) scene.camera = parseCamera(*f);
   if (auto f = root.optional("ambient")) scene.ambient = f->colour();
   if (auto f = root.optional("background")) scene.background = f->colour();
+  if (auto f = root.optional("environment"))
+    scene.environment =
+        scene_json::parseEnvironment(*f, std::filesystem::path(sourceName).parent_path());
   if (auto f = root.optional("lights")) scene.lights = parseLights(*f);
   TextureLibrary textures(scene, std::filesystem::path(sourceName).parent_path());
   MaterialTable materials;

@@ -19,9 +19,11 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
       {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+      {BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT},
   };
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  setInfo.bindingCount = 2;
+  setInfo.bindingCount = uint32_t(std::size(bindings));
   setInfo.pBindings = bindings;
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
@@ -31,17 +33,16 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
   for (uint32_t binding : {BINDING_DIFFUSE_MAP, BINDING_NORMAL_MAP, BINDING_HEIGHT_MAP})
     textureBindings[binding] = {binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                 VK_SHADER_STAGE_FRAGMENT_BIT};
-  VkDescriptorSetLayoutCreateInfo materialInfo{
-      VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  VkDescriptorSetLayoutCreateInfo materialInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   materialInfo.bindingCount = 3;
   materialInfo.pBindings = textureBindings;
   VkDescriptorSetLayout materialLayout = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorSetLayout(device, &materialInfo, nullptr, &materialLayout));
   materialSetLayout_ = DescriptorSetLayout(device, materialLayout);
 
-  VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
-                                    VK_SHADER_STAGE_FRAGMENT_BIT,
-                                0, sizeof(gpu::DrawConstants)};
+  VkPushConstantRange pushRange{
+      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+      sizeof(gpu::DrawConstants)};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   VkDescriptorSetLayout setLayouts[] = {setLayout, materialLayout};
   layoutInfo.setLayoutCount = 2;
@@ -61,7 +62,7 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
 }
 
 std::vector<std::string> ForwardPass::shaderNames() {
-  return {"forward.vert",          "forward_flat.geom",           "forward.frag",
+  return {"forward.vert",          "forward_flat.geom",          "forward.frag",
           "forward_textured.vert", "forward_textured_flat.geom", "forward_textured.frag"};
 }
 
@@ -76,28 +77,31 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
   pipelines_.clear();
 }
 
-void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended) {
+void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
+                          bool environment) {
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool texturedVariant : {false, true})
       for (bool blendedVariant : {false, true}) {
-        VariantKey key{ShadingModel(model), lights, target, texturedVariant, blendedVariant, false};
+        VariantKey key{ShadingModel(model), lights, target,     texturedVariant,
+                       blendedVariant,      false,  environment};
         bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
         if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
       }
-  VariantKey wireframe{ShadingModel::Unlit, lights, target, false, false, true};
+  VariantKey wireframe{ShadingModel::Unlit, lights, target, false, false, true, false};
   if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
     pipelines_[wireframe] = createPipeline(wireframe);
 }
 
 Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
-  const auto& [model, lights, target, textured, blended, wireframe] = key;
+  const auto& [model, lights, target, textured, blended, wireframe, environment] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
     int32_t directionalLights;
     VkBool32 attenuated;
+    VkBool32 environment;
   } constants{int32_t(model), int32_t(lights.point), int32_t(lights.directional),
-              lights.attenuated ? VK_TRUE : VK_FALSE};
+              lights.attenuated ? VK_TRUE : VK_FALSE, environment ? VK_TRUE : VK_FALSE};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -105,8 +109,10 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
        4},
       {/* constantID= */ SPEC_ATTENUATED_POINT_LIGHTS, offsetof(decltype(constants), attenuated),
        4},
+      {/* constantID= */ SPEC_ENVIRONMENT, offsetof(decltype(constants), environment), 4},
   };
-  VkSpecializationInfo specialization{4, entries, sizeof(constants), &constants};
+  VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
+                                      &constants};
 
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   auto addStage = [&](VkShaderStageFlagBits stage, VkShaderModule module) {
@@ -187,7 +193,8 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  VkPipelineColorBlendStateCreateInfo blend{
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = 1;
   blend.pAttachments = &blendAttachment;
   VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
@@ -213,14 +220,15 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   info.pDynamicState = &dynamic;
   info.layout = layout_;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr,
-                                     &pipeline));
+  VK_CHECK(
+      vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
   return Pipeline(context_.device(), pipeline);
 }
 
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
                          VkDescriptorSet frameSet, const GpuScene& scene,
-                         std::span<const DrawItem> draws, const VkViewport& viewport) const {
+                         std::span<const DrawItem> draws, const VkViewport& viewport,
+                         bool environment) const {
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
@@ -236,8 +244,8 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout t
   for (const DrawItem& draw : draws) {
     std::pair<bool, bool> variant{draw.textured, draw.transparent};
     if (bound != variant) {
-      auto pipeline =
-          pipelines_.find({model, scene.lights, target, draw.textured, draw.transparent, false});
+      auto pipeline = pipelines_.find(
+          {model, scene.lights, target, draw.textured, draw.transparent, false, environment});
       assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
       bound = variant;
@@ -245,13 +253,13 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout t
     if (draw.textured && draw.materialSet != materialSet) {
       assert(draw.materialSet != VK_NULL_HANDLE && "textured draw without its material set");
       materialSet = draw.materialSet;
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &materialSet,
-                              0, nullptr);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &materialSet, 0,
+                              nullptr);
     }
-    vkCmdPushConstants(cmd, layout_,
-                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
-                           VK_SHADER_STAGE_FRAGMENT_BIT,
-                       0, sizeof(draw.constants), &draw.constants);
+    vkCmdPushConstants(
+        cmd, layout_,
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+        sizeof(draw.constants), &draw.constants);
     vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
   }
 }
@@ -265,7 +273,8 @@ void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline = pipelines_.find({ShadingModel::Unlit, scene.lights, target, false, false, true});
+  auto pipeline =
+      pipelines_.find({ShadingModel::Unlit, scene.lights, target, false, false, true, false});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
@@ -278,10 +287,10 @@ void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
     // Unlit writes kd: every edge in one light grey, textured or not.
     gpu::DrawConstants constants = draw.constants;
     constants.kd = glm::vec4(0.9f, 0.9f, 0.9f, 1.0f);
-    vkCmdPushConstants(cmd, layout_,
-                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
-                           VK_SHADER_STAGE_FRAGMENT_BIT,
-                       0, sizeof(constants), &constants);
+    vkCmdPushConstants(
+        cmd, layout_,
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+        sizeof(constants), &constants);
     vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
   }
 }

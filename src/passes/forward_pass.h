@@ -1,17 +1,18 @@
 #pragma once
 // Forward shading pass: draws the visible objects of a GpuScene with the
 // Phong illumination equation under one of the shading models.
-// Reads: set 0 = FrameData (uniform) + ObjectData[] (storage), vertex/index
-// buffers; textured draws also set 1 (their material's textures).
+// Reads: set 0 = FrameData (uniform) + ObjectData[] (storage) + the environment
+// cube (environment term: kr, kt and ior per draw), vertex/index buffers;
+// textured draws also set 1 (their material's textures).
 // Textured draws use their own variants (forward_textured.*): they read the
 // uv and tangent attributes, which the others do not declare. Transparent
 // draws use blended variants that do not write depth.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
-#include <vector>
-#include <string>
 #include <span>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include "core/context.h"
 #include "core/depth.h"
@@ -38,14 +39,16 @@ class ForwardPass {
   // Builds the pipelines of every shading model for a scene's light layout
   // (specialization constants) and a target layout, before any frame records
   // with them; `textured` adds the textured variants, `blended` the ones
-  // transparent draws use.
-  void prepare(LightLayout lights, TargetLayout target, bool textured, bool blended);
+  // transparent draws use; `environment` selects the variants with the
+  // environment term.
+  void prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
+               bool environment = false);
   // Records `draws` (visibleDraws: opaque first, then transparent ones, which
   // blend over what is drawn) inside an active dynamic-rendering scope; sets
   // its own viewport.
   void record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
               VkDescriptorSet frameSet, const GpuScene& scene, std::span<const DrawItem> draws,
-              const VkViewport& viewport) const;
+              const VkViewport& viewport, bool environment = false) const;
   // Triangle edges of `draws` over what record() drew (polygonMode LINE,
   // depth-biased towards the eye); a no-op without fillModeNonSolid.
   void recordWireframe(VkCommandBuffer cmd, TargetLayout target, VkDescriptorSet frameSet,
@@ -57,8 +60,8 @@ class ForwardPass {
   void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:
-  // model, lights, target (samples, depth), textured, blended, wireframe
-  using VariantKey = std::tuple<ShadingModel, LightLayout, TargetLayout, bool, bool, bool>;
+  // model, lights, target (samples, depth), textured, blended, wireframe, environment term
+  using VariantKey = std::tuple<ShadingModel, LightLayout, TargetLayout, bool, bool, bool, bool>;
   Pipeline createPipeline(const VariantKey& key) const;
 
   const Context& context_;

@@ -23,7 +23,7 @@ MipGeneration::MipGeneration(const Context& context) {
 }
 
 void MipGeneration::record(VkCommandBuffer cmd, VkImage image, uint32_t width, uint32_t height,
-                           uint32_t levels) const {
+                           uint32_t levels, uint32_t layers) const {
   assert(levels == mipLevelCount(width, height) || levels == 1);
   for (uint32_t level = 1; level < levels; ++level) {
     imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::TransferDest,
@@ -35,9 +35,9 @@ void MipGeneration::record(VkCommandBuffer cmd, VkImage image, uint32_t width, u
     // sizes (37 -> 18) the taps weigh source texels unevenly, as every
     // blit-based chain does; sizes and level count stay right.
     VkImageBlit2 region{VK_STRUCTURE_TYPE_IMAGE_BLIT_2};
-    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers};
     region.srcOffsets[1] = {int32_t(source.x), int32_t(source.y), 1};
-    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
     region.dstOffsets[1] = {int32_t(target.x), int32_t(target.y), 1};
     VkBlitImageInfo2 blit{VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2};
     blit.srcImage = image;

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-
 #include <glm/gtc/packing.hpp>
 
 #include "core/barriers.h"
@@ -35,12 +34,16 @@ ImageRgba unpackHalfImage(const void* data, uint32_t width, uint32_t height) {
 Renderer::Renderer(const Context& context)
     : context_(context),
       forward_(context, kColorFormat),
-      textures_(context, forward_.materialSetLayout()) {
+      textures_(context, forward_.materialSetLayout()),
+      skybox_(context, kColorFormat, forward_.descriptorSetLayout()),
+      environmentBuilder_(context),
+      placeholderEnvironment_(environmentBuilder_.placeholder()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
-                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight}};
+                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight},
+                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = kFramesInFlight;
-  poolInfo.poolSizeCount = 2;
+  poolInfo.poolSizeCount = uint32_t(std::size(sizes));
   poolInfo.pPoolSizes = sizes;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorPool(context.device(), &poolInfo, nullptr, &pool));
@@ -49,7 +52,9 @@ Renderer::Renderer(const Context& context)
   lastCompletion_ = nowMs();
 }
 
-Renderer::~Renderer() { vkDeviceWaitIdle(context_.device()); }
+Renderer::~Renderer() {
+  vkDeviceWaitIdle(context_.device());
+}
 
 void Renderer::createFrame(Frame& frame) {
   VkDevice device = context_.device();
@@ -85,16 +90,39 @@ void Renderer::createFrame(Frame& frame) {
   setInfo.descriptorSetCount = 1;
   setInfo.pSetLayouts = &layout;
   VK_CHECK(vkAllocateDescriptorSets(device, &setInfo, &frame.set));
-  // Both bindings are written now: lavapipe crashes on never-written descriptors.
+  // Every binding is written now: lavapipe crashes on never-written descriptors.
   ensureObjectCapacity(frame, 64);
+  writeEnvironmentDescriptor(frame);
+}
+
+void Renderer::writeEnvironmentDescriptor(const Frame& frame) const {
+  const EnvironmentCube& cube = sceneEnvironment_ ? sceneEnvironment_ : placeholderEnvironment_;
+  VkDescriptorImageInfo image{cube.sampler.get(), cube.image.view(),
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = frame.set;
+  write.dstBinding = BINDING_ENVIRONMENT;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &image;
+  vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+}
+
+void Renderer::bindEnvironment(const Scene& scene, bool enabled) {
+  bool wanted = enabled && scene.environment.present();
+  if (wanted && sceneEnvironment_ && sceneEnvironmentSource_ == scene.environment) return;
+  EnvironmentCube previous = std::move(sceneEnvironment_);
+  sceneEnvironmentSource_ = wanted ? scene.environment : Environment{};
+  if (wanted) sceneEnvironment_ = environmentBuilder_.build(scene.environment);
+  // Re-point the descriptors before the previous cube's view is destroyed.
+  for (const Frame& frame : frames_) writeEnvironmentDescriptor(frame);
 }
 
 void Renderer::ensureObjectCapacity(Frame& frame, uint32_t count) {
   if (count <= frame.objectCapacity) return;
   frame.objectCapacity = std::max(count, frame.objectCapacity * 2);
-  frame.objectData =
-      Buffer(context_, VkDeviceSize(frame.objectCapacity) * sizeof(gpu::ObjectData),
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostVisible);
+  frame.objectData = Buffer(context_, VkDeviceSize(frame.objectCapacity) * sizeof(gpu::ObjectData),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostVisible);
   VkDescriptorBufferInfo frameInfo{frame.frameData.get(), 0, VK_WHOLE_SIZE};
   VkDescriptorBufferInfo objectInfo{frame.objectData.get(), 0, VK_WHOLE_SIZE};
   VkWriteDescriptorSet writes[2] = {{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},
@@ -203,10 +231,11 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
   vkCmdBeginRendering(cmd, &rendering);
 }
 
-GpuScene Renderer::upload(const Scene& scene, const TextureOptions& textures) {
+GpuScene Renderer::upload(const Scene& scene, const TextureOptions& textures, bool environment) {
   context_.waitIdle();
   GpuScene gpuScene = uploadScene(context_, scene);
   textures_.upload(scene, gpuScene, textures);
+  bindEnvironment(scene, environment);
   return gpuScene;
 }
 
@@ -225,7 +254,9 @@ void Renderer::prepare(const GpuScene& scene, const RenderSettings& settings) {
   bool textured = std::any_of(scene.draws.begin(), scene.draws.end(),
                               [](const DrawItem& draw) { return draw.textured; });
   TargetLayout layout{settings.msaaSamples, settings.depth};
-  forward_.prepare(scene.lights, layout, textured, scene.anyTransparent);
+  bool environment = bool(sceneEnvironment_);
+  forward_.prepare(scene.lights, layout, textured, scene.anyTransparent, environment);
+  if (environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
 }
 
@@ -250,17 +281,18 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
   ensureObjectCapacity(frame, uint32_t(source.objects.size()));
   uint32_t width = settings.width, height = settings.height;
   glm::mat4 view = source.camera.viewMatrix();
-  float viewAspect = float(width) / float(std::max<size_t>(1, settings.splitModels.size())) /
-                     float(height);
+  float viewAspect =
+      float(width) / float(std::max<size_t>(1, settings.splitModels.size())) / float(height);
   glm::mat4 projection = source.camera.projectionMatrix(viewAspect, isReversedZ(settings.depth));
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
-  std::vector<DrawItem> draws = visibleDraws(scene, view, projection, settings.frustumCulling,
-                                              stats.culledDraws);
+  std::vector<DrawItem> draws =
+      visibleDraws(scene, view, projection, settings.frustumCulling, stats.culledDraws);
   stats.drawCalls = uint32_t(draws.size());
   stats.triangles = 0;
   for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
+  bool environment = bool(sceneEnvironment_);
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
 
   VkCommandBuffer cmd = frame.cmd;
@@ -276,7 +308,18 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
     float left = std::floor(columnWidth * float(i));
     float right = std::floor(columnWidth * float(i + 1));
     VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
-    forward_.record(cmd, models[i], target_.layout, frame.set, scene, draws, viewport);
+    // Opaque draws, the skybox where they left the far plane, then the
+    // transparent draws, which write no depth, over both.
+    auto firstTransparent = std::find_if(draws.begin(), draws.end(),
+                                         [](const DrawItem& draw) { return draw.transparent; });
+    std::span<const DrawItem> opaque(draws.begin(), firstTransparent);
+    std::span<const DrawItem> transparent(firstTransparent, draws.end());
+    forward_.record(cmd, models[i], target_.layout, frame.set, scene, opaque, viewport,
+                    environment);
+    if (environment) skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
+    if (!transparent.empty())
+      forward_.record(cmd, models[i], target_.layout, frame.set, scene, transparent, viewport,
+                      environment);
     if (settings.wireframe)
       forward_.recordWireframe(cmd, target_.layout, frame.set, scene, draws, viewport);
   }
@@ -331,7 +374,9 @@ void Renderer::finishFrames(RenderStats& stats) {
     retire(frames_[(frameIndex_ + i) % kFramesInFlight], stats);
 }
 
-std::vector<std::string> Renderer::shaderNames() { return ForwardPass::shaderNames(); }
+std::vector<std::string> Renderer::shaderNames() {
+  return ForwardPass::shaderNames();
+}
 
 void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
   context_.waitIdle();  // pending frames use the old pipelines
@@ -340,7 +385,7 @@ void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>&
 
 RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& settings) {
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
-  GpuScene gpuScene = upload(scene, settings.textures);
+  GpuScene gpuScene = upload(scene, settings.textures, settings.environment);
   prepare(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);

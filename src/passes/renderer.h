@@ -4,8 +4,8 @@
 // Headless capture is one call: renderToImage(scene, settings).
 #include <array>
 #include <map>
-#include <string>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/barriers.h"
@@ -15,8 +15,10 @@
 #include "core/resources.h"
 #include "core/scene.h"
 #include "core/shading.h"
+#include "passes/environment_builder.h"
 #include "passes/forward_pass.h"
 #include "passes/scene_textures.h"
+#include "passes/skybox_pass.h"
 
 namespace shadelab {
 
@@ -24,16 +26,19 @@ struct RenderSettings {
   uint32_t width = 1280;
   uint32_t height = 720;
   ShadingModel shadingModel = ShadingModel::Phong;
-  uint32_t frames = 1;  // frames drawn back to back; the last one is read back
+  uint32_t frames = 1;       // frames drawn back to back; the last one is read back
   uint32_t msaaSamples = 1;  // 1 or 4 (what lavapipe offers)
   // Split screen: when not empty, the frame is cut into this many equal
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
-  TextureOptions textures;  // --filter override, --bump, --mip-tint
+  TextureOptions textures;            // --filter override, --bump, --mip-tint
   DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
-  bool frustumCulling = true;  // off only to show that culling changes no pixel
+  bool frustumCulling = true;         // off only to show that culling changes no pixel
   bool wireframe = false;  // triangle edges drawn over the shaded image (needs fillModeNonSolid)
+  // --env: with a scene environment, the environment term and the skybox;
+  // off (or a scene without one) renders with the background colour only.
+  bool environment = true;
 };
 
 struct RenderStats {
@@ -41,10 +46,10 @@ struct RenderStats {
   // Per frame, from the scene's start to the end of everything recorded after
   // it (a readback; the viewer's blit, overlay and screenshot copy).
   std::vector<double> frameDeviceMs;
-  std::vector<double> wallMs;    // per frame, interval between successive frame completions
-  uint64_t triangles = 0;        // submitted per frame (after culling)
-  uint32_t drawCalls = 0;        // submitted per frame (after culling)
-  uint32_t culledDraws = 0;      // objects outside the view frustum, not drawn
+  std::vector<double> wallMs;  // per frame, interval between successive frame completions
+  uint64_t triangles = 0;      // submitted per frame (after culling)
+  uint32_t drawCalls = 0;      // submitted per frame (after culling)
+  uint32_t culledDraws = 0;    // objects outside the view frustum, not drawn
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;
@@ -82,9 +87,10 @@ class Renderer {
   // viewer): upload once, then per frame waitForFrame, beginFrame,
   // recordScene, optional recordReadback and commands of their own on
   // commandBuffer(), submitFrame.
-  // Geometry and textures (the options are applied at upload); waits for
-  // frames in flight, which may use the previous scene's textures.
-  GpuScene upload(const Scene& scene, const TextureOptions& textures);
+  // Geometry, textures (the options are applied at upload) and, when
+  // `environment` is on, the scene's environment cube; waits for frames in
+  // flight, which may use the previous scene's textures.
+  GpuScene upload(const Scene& scene, const TextureOptions& textures, bool environment = true);
   // Throws InputError for impossible settings; builds pipelines and target.
   void prepare(const GpuScene& scene, const RenderSettings& settings);
   // Waits for the oldest frame in flight and appends its timings to `stats`.
@@ -118,14 +124,14 @@ class Renderer {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     Fence fence;
     QueryPool timestamps;
-    Buffer frameData;    // FrameData, host-visible
-    Buffer objectData;   // ObjectData[], host-visible
+    Buffer frameData;   // FrameData, host-visible
+    Buffer objectData;  // ObjectData[], host-visible
     uint32_t objectCapacity = 0;
     VkDescriptorSet set = VK_NULL_HANDLE;
     bool pending = false;  // submitted, fence not yet waited on
   };
   struct Target {
-    Image color;         // single-sampled: what is read back
+    Image color;  // single-sampled: what is read back
     Image depth;
     Image multisampled;  // colour when msaaSamples > 1, resolved into `color`
     ImageUse colorUse = ImageUse::Undefined;
@@ -142,10 +148,20 @@ class Renderer {
   void beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width, uint32_t height);
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats);
+  // Builds the scene's cube (kept while the scene's environment stays the
+  // same) or picks the placeholder, and points every frame's descriptor at
+  // it; call with no frame in flight.
+  void bindEnvironment(const Scene& scene, bool enabled);
+  void writeEnvironmentDescriptor(const Frame& frame) const;
 
   const Context& context_;
   ForwardPass forward_;
   SceneTextures textures_;
+  SkyboxPass skybox_;
+  EnvironmentBuilder environmentBuilder_;
+  EnvironmentCube placeholderEnvironment_;
+  EnvironmentCube sceneEnvironment_;    // empty when the scene has none or it is off
+  Environment sceneEnvironmentSource_;  // what sceneEnvironment_ was built from
   DescriptorPool descriptorPool_;
   std::array<Frame, kFramesInFlight> frames_;
   uint64_t frameIndex_ = 0;  // frames begun; the slot is frameIndex_ % kFramesInFlight

@@ -78,7 +78,7 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
       options_(options),
       surface_(context.instance(), window.createSurface(context.instance())),
       renderer_(context),
-      gpuScene_(renderer_.upload(scene_, options.initial.textures)),
+      gpuScene_(renderer_.upload(scene_, options.initial.textures, options.initial.environment)),
       swapchain_(context, surface_.get(), options.presentMode),
       sceneCamera_(scene_.camera),
       camera_(scene_.camera),
@@ -86,7 +86,7 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
       tessellation_(options.tessellation) {
   if (tessellation_ != 1.0f) {
     scene_.retessellate(tessellation_);
-    gpuScene_ = renderer_.upload(scene_, settings_.textures);
+    gpuScene_ = renderer_.upload(scene_, settings_.textures, settings_.environment);
   }
   for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
   glm::ivec2 size = window.framebufferSize();

@@ -79,7 +79,15 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
          v.applyTextureOptions(std::string("bump mapping ") +
                                (v.settings_.textures.bump ? "on" : "off"));
        }},
-      {'E', "E", "environment mapping", [](Viewer& v) { v.notAvailable("environment mapping"); }},
+      {'E', "E", "environment mapping (reflection, refraction, skybox) on / off",
+       [](Viewer& v) {
+         v.settings_.environment = !v.settings_.environment;
+         v.gpuScene_ = v.renderer_.upload(v.scene_, v.settings_.textures, v.settings_.environment);
+         std::string state = v.settings_.environment ? "on" : "off";
+         v.say(v.scene_.environment.present()
+                   ? "environment mapping " + state
+                   : "environment mapping " + state + " (this scene has no environment)");
+       }},
       {'F', "F", "texture filter: materials' own, nearest, bilinear, trilinear, aniso",
        [](Viewer& v) {
          std::optional<TextureFilter>& filter = v.settings_.textures.filterOverride;
@@ -140,7 +148,8 @@ void Viewer::setTessellation(float scale) {
   if (clamped == tessellation_) return say("tessellation already at its limit");
   tessellation_ = clamped;
   scene_.retessellate(tessellation_);
-  gpuScene_ = renderer_.upload(scene_, settings_.textures);  // waits for frames in flight
+  gpuScene_ = renderer_.upload(scene_, settings_.textures,
+                               settings_.environment);  // waits for frames in flight
   char text[96];
   std::snprintf(text, sizeof(text), "tessellation x%g: %s triangles", double(tessellation_),
                 withThousands(gpuScene_.triangles).c_str());
@@ -154,14 +163,14 @@ void Viewer::autoTessellate() {
   VkExtent2D extent = swapchain_.extent();
   tessellateForView(scene_, ViewSize{camera_.camera(), extent.width, extent.height},
                     kMaxErrorPixels);
-  gpuScene_ = renderer_.upload(scene_, settings_.textures);
+  gpuScene_ = renderer_.upload(scene_, settings_.textures, settings_.environment);
   say("automatic tessellation for this view (chord error <= 0.5 px): " +
       withThousands(gpuScene_.triangles) + " triangles");
 }
 
 // The texture options are baked into the material sets at upload.
 void Viewer::applyTextureOptions(const std::string& message) {
-  gpuScene_ = renderer_.upload(scene_, settings_.textures);
+  gpuScene_ = renderer_.upload(scene_, settings_.textures, settings_.environment);
   bool textured = std::any_of(gpuScene_.draws.begin(), gpuScene_.draws.end(),
                               [](const DrawItem& draw) { return draw.textured; });
   say(textured ? message : message + " (no textured material in this scene)");
