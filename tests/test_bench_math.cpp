@@ -73,6 +73,18 @@ TEST(Chart, DrawsEachSeriesInItsColourOnWhitePaper) {
   EXPECT_LT(pixelsOfColor(drawChart(without, 600, 400), glm::vec3(0, 0, 1)), 1u);
 }
 
+// The bench of assets/scenes/peer-shading.json at 800x600 aborted inside
+// OpenImageIO: its RMSE range (2.26 to 16.1) gave a tick above the plot,
+// whose label landed off the image. Every such range must draw.
+TEST(Chart, RangesWhoseTicksOvershootTheAxisStillDraw) {
+  for (double high : {16.126, 9.7, 31.3, 0.0123, 1234.5}) {
+    Chart chart{"title", "subtitle", {"ms", AxisScale::Log}, {"rmse"}};
+    chart.series.push_back({"s", glm::vec3(1, 0, 0), {{2.7, 2.264, "a"}, {4.0, high, "b"}}});
+    ImageU8 image = drawChart(chart, 1100, 640);
+    EXPECT_GT(pixelsOfColor(image, glm::vec3(1, 0, 0)), 20u) << high;
+  }
+}
+
 TEST(BenchCsv, ParsesColumnsAndRowsAndRejectsRaggedLines) {
   BenchTable table = parseBenchCsv("a,b,c\n1,2,3\n4,5,\n", "t.csv");
   EXPECT_EQ(table.columns, (std::vector<std::string>{"a", "b", "c"}));

@@ -124,14 +124,18 @@ void drawVerticalText(OIIO::ImageBuf& image, int centerX, int centerY, const std
 
 void drawAxes(OIIO::ImageBuf& image, const Chart& chart, const Mapping& mx, const Mapping& my,
               int plotLeft, int plotTop, int plotRight, int plotBottom) {
+  // A tick can fall just outside the plot when the range was widened with
+  // another tick step; OpenImageIO aborts on text placed off the image.
   for (double tick : axisTicks(mx.low, mx.high, chart.x.scale)) {
     int x = int(std::lround(mx(tick)));
+    if (x < plotLeft || x > plotRight) continue;
     IBA::render_line(image, x, plotTop, x, plotBottom, {kGrid, 4});
     IBA::render_line(image, x, plotBottom, x, plotBottom + 5, {kInk, 4});
     drawText(image, x, plotBottom + 20, tickText(tick), kTickSize, kInk, IBA::TextAlignX::Center);
   }
   for (double tick : axisTicks(my.low, my.high, chart.y.scale)) {
     int y = int(std::lround(my(tick)));
+    if (y < plotTop || y > plotBottom) continue;
     IBA::render_line(image, plotLeft, y, plotRight, y, {kGrid, 4});
     IBA::render_line(image, plotLeft - 5, y, plotLeft, y, {kInk, 4});
     drawText(image, plotLeft - 8, y, tickText(tick), kTickSize, kInk, IBA::TextAlignX::Right,
