@@ -8,6 +8,7 @@
 #include "core/mesh.h"
 #include "core/shader.h"
 #include "core/vk_check.h"
+#include "passes/graphics_pipeline.h"
 
 namespace shadelab {
 
@@ -148,12 +149,6 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   vertexInput.vertexAttributeDescriptionCount = textured ? 4 : 2;
   vertexInput.pVertexAttributeDescriptions = attributes;
 
-  VkPipelineInputAssemblyStateCreateInfo assembly{
-      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
   VkPipelineRasterizationStateCreateInfo raster{
       VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = wireframe ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
@@ -193,36 +188,9 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
   blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend{
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blendAttachment;
-  VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = 2;
-  dynamic.pDynamicStates = dynamicStates;
-
-  VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-  rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &colorFormat_;
-  rendering.depthAttachmentFormat = depthFormat(target.depth);
-
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
-  info.stageCount = uint32_t(stages.size());
-  info.pStages = stages.data();
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dynamic;
-  info.layout = layout_;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  VK_CHECK(
-      vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-  return Pipeline(context_.device(), pipeline);
+  return createGraphicsPipeline(
+      context_.device(), {stages, &vertexInput, &raster, &multisample, &depth, blendAttachment,
+                          colorFormat_, depthFormat(target.depth), layout_});
 }
 
 void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
