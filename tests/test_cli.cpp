@@ -13,28 +13,12 @@
 #include <vector>
 
 #include "core/image.h"
+#include "run_command.h"
 
 namespace {
 namespace fs = std::filesystem;
-
-struct CommandResult {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult run(const std::string& arguments, const std::string& environment = "") {
-  std::string command = environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    result.output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using shadelab::test::CommandResult;
+using shadelab::test::run;
 
 class Cli : public ::testing::Test {
  protected:
@@ -321,8 +305,7 @@ TEST_F(Cli, MissingTextureNamesTheFileAndTheMaterialAndWritesNothing) {
 
 TEST_F(Cli, UnreadableTextureIsAnInputError) {
   std::ofstream(out("noise.png")) << "not a png";
-  std::ofstream(out("textured.json"))
-      << R"({"objects": [{"name": "ball", "shape": "sphere",
+  std::ofstream(out("textured.json")) << R"({"objects": [{"name": "ball", "shape": "sphere",
                           "material": {"normal_map": "noise.png"}}]})";
   CommandResult r = run("render " + out("textured.json") + " -o " + out("a.png"));
   EXPECT_EQ(r.exitCode, 2) << r.output;
@@ -375,8 +358,8 @@ TEST_F(Cli, BrokenGltfFilesAreInputErrors) {
 }
 
 TEST_F(Cli, RendersAGltfWithSimplificationAndAutoTessellation) {
-  CommandResult gltf = run("render " + std::string(SHADELAB_TEST_DATA_DIR) +
-                           "/textured.gltf -o " + out("a.png") + " --size 64x48 --simplify 1");
+  CommandResult gltf = run("render " + std::string(SHADELAB_TEST_DATA_DIR) + "/textured.gltf -o " +
+                           out("a.png") + " --size 64x48 --simplify 1");
   ASSERT_EQ(gltf.exitCode, 0) << gltf.output;
   EXPECT_NE(gltf.output.find("simplified loaded meshes to 1 px: 2 -> 2 triangles"),
             std::string::npos)
@@ -450,9 +433,9 @@ TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   auto rows = csvRows(readText(out("z/zfight.csv")));
   ASSERT_EQ(rows.size(), 1u + 2 * 4 * 2) << "header + projections x depth modes x near planes";
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"projection", "depth", "format", "near", "far", "gap",
-                                               "width", "height", "covered_pixels", "wrong_pixels",
-                                               "wrong_fraction"}));
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"projection", "depth", "format", "near", "far",
+                                               "gap", "width", "height", "covered_pixels",
+                                               "wrong_pixels", "wrong_fraction"}));
   EXPECT_EQ(rows[1][0], "perspective");
   EXPECT_EQ(rows[1][1], "d16");
   EXPECT_EQ(rows[1][2], "D16_UNORM");
@@ -465,10 +448,16 @@ TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
   EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
 }
 
-const std::vector<std::string> kBenchColumns = {
-    "scene", "width", "height", "mode", "tessellation", "msaa", "filter", "triangles", "frames",
-    "device_median_ms", "device_p95_ms", "wall_median_ms", "wall_p95_ms", "device_memory_mb",
-    "peak_rss_mb", "reference", "rmse", "psnr", "ssim", "flip"};
+const std::vector<std::string> kBenchColumns = {"scene",         "width",
+                                                "height",        "mode",
+                                                "tessellation",  "msaa",
+                                                "filter",        "triangles",
+                                                "frames",        "device_median_ms",
+                                                "device_p95_ms", "wall_median_ms",
+                                                "wall_p95_ms",   "device_memory_mb",
+                                                "peak_rss_mb",   "reference",
+                                                "rmse",          "psnr",
+                                                "ssim",          "flip"};
 
 TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   CommandResult r = run("bench default -o " + out("b") +
@@ -527,8 +516,8 @@ TEST_F(Cli, QualityWithLooseBoundPicksTheCheapestBenchedSetting) {
   for (size_t i = 2; i < rows.size(); ++i)
     if (std::stod(rows[i][9]) < std::stod(rows[cheapest][9])) cheapest = i;
   std::string expected = "chose " + rows[cheapest][3] + " t" + rows[cheapest][4] + " 1x";
-  CommandResult r = run("render default -o " + out("q.png") +
-                        " --size 64x36 --quality 1000 --bench " + out("b"));
+  CommandResult r =
+      run("render default -o " + out("q.png") + " --size 64x36 --quality 1000 --bench " + out("b"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
   EXPECT_EQ(pngSize(out("q.png")), std::make_pair(64u, 36u));

@@ -15,6 +15,7 @@
 #include "core/lod.h"
 #include "core/scene.h"
 #include "gpu_test_support.h"
+#include "run_command.h"
 #include "view/camera_controller.h"
 
 namespace shadelab::test {
@@ -23,26 +24,6 @@ namespace fs = std::filesystem;
 
 constexpr uint32_t kWidth = 320;
 constexpr uint32_t kHeight = 180;
-
-struct CommandResult {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult run(const std::string& arguments, const std::string& environment = "") {
-  std::string command =
-      environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    result.output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
 
 class Viewer : public GpuTest {
  protected:
