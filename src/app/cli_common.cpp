@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "core/errors.h"
-#include "core/raytracer.h"
 
 namespace shadelab {
 
@@ -51,17 +50,6 @@ std::unique_ptr<Context> openContext(const GlobalOptions& global) {
   options.validation = global.validate;
   options.deviceName = global.device;
   return std::make_unique<Context>(options);
-}
-
-void warnAboutUntracedTextures(const Scene& scene) {
-  const std::vector<std::string> names = untracedTextureObjects(scene);
-  if (names.empty()) return;
-  std::string list;
-  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
-  std::fprintf(stderr,
-               "shadelab: note: the ray tracer does not sample textures yet; traced with their "
-               "constant colours: %s\n",
-               list.c_str());
 }
 
 int finishWithValidation(const Context& context, int exitCode) {

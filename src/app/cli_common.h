@@ -26,9 +26,6 @@ ShadingModel parseShadingModelOption(const std::string& text, const std::string&
 DepthMode parseDepthModeOption(const std::string& text, const std::string& option);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
-// Prints a note naming the textured objects, which the ray tracer draws
-// with their materials' constant colours.
-void warnAboutUntracedTextures(const Scene& scene);
 // After a command: with validation on, any message turns success into exit 1.
 int finishWithValidation(const Context& context, int exitCode);
 

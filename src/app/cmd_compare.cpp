@@ -74,7 +74,6 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   checkOutputPath(sheetPath);
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
   Scene scene = loadScene(options.scene);
-  if (options.reference == "trace") warnAboutUntracedTextures(scene);
 
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;

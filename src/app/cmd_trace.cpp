@@ -29,7 +29,6 @@ int runTrace(const TraceOptions& options) {
   checkSamplesPerPixel(options.samplesPerPixel);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
-  warnAboutUntracedTextures(scene);
   TraceSettings settings;
   settings.width = size.width;
   settings.height = size.height;

@@ -9,7 +9,9 @@
 
 #include "core/errors.h"
 #include "core/lighting.h"
+#include "core/trace_material.h"
 #include "core/trace_shapes.h"
+#include "core/uv_mapping.h"
 #include "interface.h"
 
 namespace shadelab {
@@ -74,22 +76,9 @@ TraceStats& TraceStats::operator+=(const TraceStats& other) {
   return *this;
 }
 
-Material materialAt(const Scene& scene, const SurfaceHit& hit) {
-  return scene.objects[hit.object].material;
-}
-
-glm::vec3 missColour(const Scene& scene, glm::vec3 /*direction*/) {
-  return scene.background;
-}
-
-std::vector<std::string> untracedTextureObjects(const Scene& scene) {
-  std::vector<std::string> names;
-  for (const Object& object : scene.objects) {
-    const Material& m = object.material;
-    if (m.diffuseMap.present() || m.normalMap.present() || m.heightMap.present())
-      names.push_back(object.name);
-  }
-  return names;
+glm::vec3 missColour(const Scene& scene, glm::vec3 direction) {
+  return scene.environment.present() ? environmentRadiance(scene.environment, direction)
+                                     : scene.background;
 }
 
 CameraRays::CameraRays(const Camera& camera, uint32_t width, uint32_t height)
@@ -121,6 +110,8 @@ struct RayTracer::TracedObject {
   Bounds worldBounds;
   float transparency = 0.0f;
   uint32_t sceneObject = 0;  // index into Scene::objects
+  UvProjection projection = UvProjection::Mesh;
+  Bounds uvBounds;  // the scene mesh's box, which S-mappings are fitted to (as at upload)
 
   Ray toLocal(const Ray& ray) const {
     return {glm::vec3(worldToObject * glm::vec4(ray.origin, 1.0f)),
@@ -130,7 +121,38 @@ struct RayTracer::TracedObject {
   bool intersect(const Ray& local, float tMin, float tMax, LocalHit& hit,
                  glm::vec3& geometric) const;
   uint32_t countHits(const Ray& local, float tMax) const;
+  // The texture coordinates at an object-space point on (or, linearly
+  // extended, near) the surface hit with `normal` on `triangle`.
+  glm::vec2 uvAt(glm::vec3 point, glm::vec3 normal, uint32_t triangle) const;
 };
+
+glm::vec2 RayTracer::TracedObject::uvAt(glm::vec3 point, glm::vec3 normal,
+                                        uint32_t triangle) const {
+  if (projection != UvProjection::Mesh) return projectUv(projection, point, normal, uvBounds);
+  switch (surface) {
+    case Surface::Sphere:
+      return sphericalUv(point / glm::length(point));
+    case Surface::Plane:
+      return planeUv(point, size);
+    case Surface::Box:
+      return boxFaceUv(point, halfExtents, normal);
+    case Surface::Mesh: {
+      // Barycentric coordinates of the point projected onto the triangle's plane.
+      const Vertex& a = mesh->vertices[mesh->indices[3 * triangle]];
+      const Vertex& b = mesh->vertices[mesh->indices[3 * triangle + 1]];
+      const Vertex& c = mesh->vertices[mesh->indices[3 * triangle + 2]];
+      const glm::vec3 e0 = b.position - a.position, e1 = c.position - a.position;
+      const glm::vec3 d = point - a.position;
+      const float d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
+      const float denominator = d00 * d11 - d01 * d01;
+      if (!(std::abs(denominator) > 0.0f)) return a.uv;
+      const float v = (d11 * glm::dot(d, e0) - d01 * glm::dot(d, e1)) / denominator;
+      const float w = (d00 * glm::dot(d, e1) - d01 * glm::dot(d, e0)) / denominator;
+      return (1.0f - v - w) * a.uv + v * b.uv + w * c.uv;
+    }
+  }
+  return glm::vec2(0.0f);
+}
 
 bool RayTracer::TracedObject::intersect(const Ray& local, float tMin, float tMax, LocalHit& hit,
                                         glm::vec3& geometric) const {
@@ -155,6 +177,7 @@ bool RayTracer::TracedObject::intersect(const Ray& local, float tMin, float tMax
       hit.t = triangle.t;
       hit.normal = w * a.normal + triangle.u * b.normal + triangle.v * c.normal;
       hit.uv = w * a.uv + triangle.u * b.uv + triangle.v * c.uv;
+      hit.triangle = triangle.triangle;
       geometric = glm::cross(b.position - a.position, c.position - a.position);
       return true;
     }
@@ -212,6 +235,9 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.worldToObject = glm::inverse(object.transform);
     traced.normalToWorld = glm::transpose(glm::inverse(glm::mat3(object.transform)));
     traced.transparency = object.material.transparency;
+    traced.projection = object.material.uvProjection;
+    if (traced.projection != UvProjection::Mesh)
+      traced.uvBounds = computeBounds(scene.meshes[object.mesh]);
     Bounds local;
     switch (traced.surface) {
       case Surface::Sphere:
@@ -231,6 +257,7 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.worldBounds = transformBounds(local, object.transform);
     objects_.push_back(traced);
   }
+  for (const Texture& texture : scene.textures) textures_.emplace_back(texture);
 }
 
 RayTracer::~RayTracer() = default;
@@ -240,14 +267,17 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float
   LocalHit best;
   glm::vec3 bestGeometric{0.0f};
   int bestObject = -1;
+  Ray bestLocal;
   for (size_t i = 0; i < objects_.size(); ++i) {
     const TracedObject& object = objects_[i];
     float tEntry;
     if (!intersectBounds(object.worldBounds, ray, inverse, tMin, tMax, tEntry)) continue;
     LocalHit hit;
     glm::vec3 geometric;
-    if (!object.intersect(object.toLocal(ray), tMin, tMax, hit, geometric)) continue;
+    const Ray local = object.toLocal(ray);
+    if (!object.intersect(local, tMin, tMax, hit, geometric)) continue;
     best = hit;
+    bestLocal = local;
     bestGeometric = geometric;
     bestObject = int(i);
     tMax = hit.t;
@@ -259,6 +289,9 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float
   hit.object = object.sceneObject;
   hit.position = ray.at(best.t);
   hit.uv = best.uv;
+  hit.localPosition = bestLocal.at(best.t);
+  hit.localNormal = bestGeometric;
+  hit.triangle = best.triangle;
   glm::vec3 geometric = object.normalToWorld * bestGeometric;
   glm::vec3 shading = object.normalToWorld * best.normal;
   const float geometricLength = glm::length(geometric);
@@ -332,9 +365,45 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
                                         material, settings.blinn);
 }
 
-glm::vec3 RayTracer::shade(const Ray& ray, const SurfaceHit& hit, glm::vec3 viewer, uint32_t depth,
-                           float weight, const TraceSettings& settings, TraceStats& stats) const {
-  const Material material = materialAt(scene_, hit);
+Material RayTracer::materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const {
+  const Material& material = scene_.objects[hit.object].material;
+  if (!material.diffuseMap.present() && !material.normalMap.present() &&
+      !material.heightMap.present())
+    return material;
+  // objects_ is in scene order, some objects left out: find the hit's.
+  const TracedObject& object = *std::lower_bound(
+      objects_.begin(), objects_.end(), hit.object,
+      [](const TracedObject& traced, uint32_t index) { return traced.sceneObject < index; });
+  const glm::vec3 incident = glm::normalize(ray.direction);
+  UvFrame frame;
+  frame.uv = object.projection == UvProjection::Mesh
+                 ? hit.uv
+                 : object.uvAt(hit.localPosition, hit.localNormal, hit.triangle);
+  tangentPlaneAxes(hit.geometricNormal, incident, frame.along, frame.across);
+  // The uv's derivatives by central differences a small step either side
+  // (exact for the linear mappings, within float rounding for the rest).
+  const Bounds& box = object.worldBounds;
+  const float step = 1e-4f * std::max(1.0f, glm::length(box.max - box.min));
+  const glm::mat3 toLocal(object.worldToObject);
+  auto derivative = [&](glm::vec3 axis) {
+    const glm::vec3 offset = toLocal * (step * axis);
+    glm::vec2 difference = object.uvAt(hit.localPosition + offset, hit.localNormal, hit.triangle) -
+                           object.uvAt(hit.localPosition - offset, hit.localNormal, hit.triangle);
+    difference.x -= std::round(difference.x);  // u jumps by 1 across a seam
+    return difference / (2.0f * step);
+  };
+  frame.uvPerAlong = derivative(frame.along);
+  frame.uvPerAcross = derivative(frame.across);
+  const float cosine = std::abs(glm::dot(hit.geometricNormal, incident));
+  return texturedMaterial(material, textures_, frame, footprint, cosine, hit.shadingNormal);
+}
+
+glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth,
+                           float weight, const TraceSettings& settings, TraceStats& stats,
+                           RayCone cone) const {
+  const float footprint = cone.width + cone.spread * hit.t * glm::length(ray.direction);
+  const RayCone next{footprint, cone.spread};
+  const Material material = materialAt(ray, hit, footprint);
   glm::vec3 colour = localShading(hit, material, viewer, settings, stats);
   if (depth >= settings.maxDepth) return colour;
   const glm::vec3 incident = glm::normalize(ray.direction);
@@ -343,7 +412,7 @@ glm::vec3 RayTracer::shade(const Ray& ray, const SurfaceHit& hit, glm::vec3 view
     const Ray reflected =
         offsetRay(hit, mirrorDirection(incident, hit.shadingNormal), settings.epsilon);
     colour += kr * traceRay(reflected, kInfinity, reflected.origin, depth + 1, weight * kr,
-                            settings, stats);
+                            settings, stats, next);
   }
   if (kt > 0.0f && weight * kt >= settings.minContribution) {
     // Entering the object from air (eta = 1 / ior) or leaving it (ior / 1),
@@ -356,23 +425,30 @@ glm::vec3 RayTracer::shade(const Ray& ray, const SurfaceHit& hit, glm::vec3 view
         refracted ? glm::normalize(*refracted) : mirrorDirection(incident, hit.shadingNormal);
     const Ray transmitted = offsetRay(hit, direction, settings.epsilon);
     colour += kt * traceRay(transmitted, kInfinity, transmitted.origin, depth + 1, weight * kt,
-                            settings, stats);
+                            settings, stats, next);
   }
   return colour;
 }
 
 glm::vec3 RayTracer::traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth,
-                              float weight, const TraceSettings& settings,
-                              TraceStats& stats) const {
+                              float weight, const TraceSettings& settings, TraceStats& stats,
+                              RayCone cone) const {
   ++(depth == 0 ? stats.primaryRays : stats.secondaryRays);
   std::optional<SurfaceHit> hit = intersect(ray, 0.0f, tMax);
   if (!hit) return missColour(scene_, ray.direction);
-  return shade(ray, *hit, viewer, depth, weight, settings, stats);
+  return shade(ray, *hit, viewer, depth, weight, settings, stats, cone);
 }
 
-// The box-filtered mean of the pixel's n x n stratified samples.
+// The box-filtered mean of the pixel's n x n stratified samples, each with
+// a cone one stratum wide (the box filter averages the strata).
 glm::vec3 RayTracer::tracePixel(const CameraRays& camera, uint32_t x, uint32_t y, uint32_t grid,
                                 const TraceSettings& settings, TraceStats& stats) const {
+  const Ray centre = camera.through(float(x) + 0.5f, float(y) + 0.5f);
+  const Ray beside = camera.through(float(x) + 1.5f, float(y) + 0.5f);
+  const float nearWidth = glm::length(beside.origin - centre.origin);
+  const float farWidth = glm::length(beside.at(1.0f) - centre.at(1.0f));
+  const RayCone cone{nearWidth / float(grid),
+                     (farWidth - nearWidth) / glm::length(centre.direction) / float(grid)};
   glm::vec3 sum{0.0f};
   for (uint32_t s = 0; s < grid * grid; ++s) {
     float dx = 0.5f, dy = 0.5f;
@@ -381,7 +457,7 @@ glm::vec3 RayTracer::tracePixel(const CameraRays& camera, uint32_t x, uint32_t y
       dy = (float(s / grid) + jitter(x, y, s, 1)) / float(grid);
     }
     const Ray ray = camera.through(float(x) + dx, float(y) + dy);
-    sum += traceRay(ray, 1.0f, camera.viewer(), 0, 1.0f, settings, stats);
+    sum += traceRay(ray, 1.0f, camera.viewer(), 0, 1.0f, settings, stats, cone);
   }
   return sum / float(grid * grid);
 }

@@ -22,6 +22,7 @@
 #include "core/image.h"
 #include "core/ray.h"
 #include "core/scene.h"
+#include "core/trace_textures.h"
 
 namespace shadelab {
 
@@ -74,6 +75,19 @@ struct SurfaceHit {
   glm::vec2 uv{0.0f};               // as the object's mesh maps it (for textures)
   bool frontFace = true;            // the ray came from outside (against the outward normal)
   uint32_t object = 0;              // index into Scene::objects
+  // Object space, for texture coordinates: the point, the outward face
+  // normal, and the triangle hit on a mesh.
+  glm::vec3 localPosition{0.0f};
+  glm::vec3 localNormal{0.0f};
+  uint32_t triangle = 0;
+};
+
+// A ray's footprint as a cone (core/trace_material.h): its width at the
+// origin and how much that grows per unit of distance. The default, a
+// line, samples textures at their finest level.
+struct RayCone {
+  float width = 0.0f;
+  float spread = 0.0f;
 };
 
 // Camera rays exactly as the rasteriser projects: pixel (x, y) (0..width,
@@ -112,9 +126,10 @@ class RayTracer {
 
   // The colour seen along `ray` for tMin < t < tMax. `viewer` is where V
   // points (the eye for camera rays, the origin for secondary ones), `depth`
-  // the bounces already taken, `weight` the ray's share of the pixel.
+  // the bounces already taken, `weight` the ray's share of the pixel,
+  // `cone` its footprint for texture filtering.
   glm::vec3 traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth, float weight,
-                     const TraceSettings& settings, TraceStats& stats) const;
+                     const TraceSettings& settings, TraceStats& stats, RayCone cone = {}) const;
   std::optional<SurfaceHit> intersect(const Ray& ray, float tMin, float tMax) const;
   // The fraction of light passing from `origin` along `direction` for
   // 0 < t < tMax: 0 behind an opaque surface, the product of kt otherwise.
@@ -122,8 +137,11 @@ class RayTracer {
 
  private:
   struct TracedObject;
-  glm::vec3 shade(const Ray& ray, const SurfaceHit& hit, glm::vec3 viewer, uint32_t depth,
-                  float weight, const TraceSettings& settings, TraceStats& stats) const;
+  glm::vec3 shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth, float weight,
+                  const TraceSettings& settings, TraceStats& stats, RayCone cone) const;
+  // The material at a hit with its textures applied (the diffuse texel,
+  // the bumped shading normal written into `hit`), filtered over `footprint`.
+  Material materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const;
   glm::vec3 localShading(const SurfaceHit& hit, const Material& material, glm::vec3 viewer,
                          const TraceSettings& settings, TraceStats& stats) const;
   Ray offsetRay(const SurfaceHit& hit, glm::vec3 direction, float epsilon) const;
@@ -134,19 +152,15 @@ class RayTracer {
   std::vector<std::unique_ptr<Mesh>> meshes_;  // the meshes the BVHs were built from
   std::vector<std::unique_ptr<Bvh>> bvhs_;
   std::vector<TracedObject> objects_;
+  std::vector<TraceTexture> textures_;  // parallel to Scene::textures
 };
 
 // Throws InputError unless `samplesPerPixel` is a square n * n, 1..256.
 void checkSamplesPerPixel(uint32_t samplesPerPixel);
 
-// The hooks textures and environments will fill: the material at a hit (a
-// texture lookup goes here) and the colour of a ray that hits nothing (an
-// environment lookup goes here). Today: the object's material and the scene's
-// background.
-Material materialAt(const Scene& scene, const SurfaceHit& hit);
+// The colour of a ray that hits nothing: the environment's radiance along
+// it (core/environment.h, the same orientation and intensity the cube map
+// is built with), or the background colour in a scene without one.
 glm::vec3 missColour(const Scene& scene, glm::vec3 direction);
-// The names of objects whose materials use textures (diffuse, normal or
-// height maps), which the tracer does not sample yet: callers warn the user.
-std::vector<std::string> untracedTextureObjects(const Scene& scene);
 
 }  // namespace shadelab

@@ -116,7 +116,7 @@ bool intersectPlane(const Ray& ray, float size, float tMin, float tMax, LocalHit
   const glm::vec3 point = ray.at(t);
   hit.t = t;
   hit.normal = {0.0f, 1.0f, 0.0f};
-  hit.uv = {point.x / size + 0.5f, 0.5f - point.z / size};  // as makePlane
+  hit.uv = planeUv(point, size);
   return true;
 }
 
@@ -124,13 +124,23 @@ bool intersectBox(const Ray& ray, glm::vec3 halfExtents, float tMin, float tMax,
   float t;
   if (!firstInRange(boxCrossings(ray, halfExtents), tMin, tMax, t)) return false;
   const glm::vec3 point = ray.at(t);
-  const BoxFace& face = kBoxFaces[boxFaceAt(point, halfExtents)];
-  const glm::vec3 bitangent = glm::cross(face.normal, face.tangent);
-  const glm::vec3 unit = point / halfExtents;
   hit.t = t;
-  hit.normal = face.normal;
-  hit.uv = (glm::vec2(glm::dot(unit, face.tangent), glm::dot(unit, bitangent)) + 1.0f) * 0.5f;
+  hit.normal = kBoxFaces[boxFaceAt(point, halfExtents)].normal;
+  hit.uv = boxFaceUv(point, halfExtents, hit.normal);
   return true;
+}
+
+glm::vec2 planeUv(glm::vec3 point, float size) {
+  return {point.x / size + 0.5f, 0.5f - point.z / size};  // as makePlane
+}
+
+glm::vec2 boxFaceUv(glm::vec3 point, glm::vec3 halfExtents, glm::vec3 faceNormal) {
+  const BoxFace* face = &kBoxFaces[0];
+  for (const BoxFace& candidate : kBoxFaces)
+    if (candidate.normal == faceNormal) face = &candidate;
+  const glm::vec3 bitangent = glm::cross(face->normal, face->tangent);
+  const glm::vec3 unit = point / halfExtents;
+  return (glm::vec2(glm::dot(unit, face->tangent), glm::dot(unit, bitangent)) + 1.0f) * 0.5f;
 }
 
 }  // namespace shadelab

@@ -15,6 +15,7 @@ struct LocalHit {
   float t = 0.0f;
   glm::vec3 normal{0.0f};
   glm::vec2 uv{0.0f};
+  uint32_t triangle = 0;  // meshes: which triangle
 };
 
 // Up to two crossings of the ray's line with the surface, in increasing t
@@ -37,6 +38,12 @@ Crossings boxCrossings(const Ray& ray, glm::vec3 halfExtents);
 bool intersectSphere(const Ray& ray, float radius, float tMin, float tMax, LocalHit& hit);
 bool intersectPlane(const Ray& ray, float size, float tMin, float tMax, LocalHit& hit);
 bool intersectBox(const Ray& ray, glm::vec3 halfExtents, float tMin, float tMax, LocalHit& hit);
+
+// The uv the shape's mesh gives a point of the plane (y = 0) or of the box
+// face with outward normal `faceNormal`; linear in the point, so points off
+// the surface (a ray footprint's corners) get the uv extended.
+glm::vec2 planeUv(glm::vec3 point, float size);
+glm::vec2 boxFaceUv(glm::vec3 point, glm::vec3 halfExtents, glm::vec3 faceNormal);
 
 // How many crossings lie in tMin < t < tMax.
 uint32_t countInRange(const Crossings& crossings, float tMin, float tMax);
