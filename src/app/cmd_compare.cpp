@@ -1,11 +1,11 @@
 // shadelab compare: the shading models side by side in viewports of one
 // frame (one camera), each with a heatmap of its difference from a reference
 // and its error numbers; the numbers also go to a JSON file beside the sheet.
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "app/cli_common.h"
@@ -14,6 +14,7 @@
 #include "core/files.h"
 #include "core/metrics.h"
 #include "core/raytracer.h"
+#include "core/reflection_regions.h"
 #include "core/scene_loader.h"
 #include "core/sheet.h"
 #include "passes/reference.h"
@@ -99,6 +100,21 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
                            {"size", options.size},
                            {"reference", description},
                            {"modes", nlohmann::json::array()}};
+  // Environment mapping against traced reflection: FLIP split by where the
+  // traced specular path goes (core/reflection_regions.h).
+  std::optional<ReflectionRegions> regions;
+  std::vector<SheetCell> regionRow;
+  if (scene.environment.present() && reference.name == "trace") {
+    regions = classifyReflections(scene, cell.width, cell.height);
+    const uint64_t hits = regions->count(ReflectionRegion::HitsObject);
+    const uint64_t escapes = regions->count(ReflectionRegion::Escapes);
+    regionRow.push_back({regionImage(*regions),
+                         "traced reflection paths",
+                         {"orange: hit an object (" + std::to_string(hits) + " px)",
+                          "blue: escape (" + std::to_string(escapes) + " px)",
+                          "env mapping shows only what escapes"}});
+    report["reflectionRegions"] = {{"hitsObjectPixels", hits}, {"escapesPixels", escapes}};
+  }
   std::printf("reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
   std::printf("%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
               "mean FLIP");
@@ -109,22 +125,31 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     const double ssim = structuralSimilarity(expected, image).mean;
     const MetricMap flip = flipError(expected, image);
     renders.push_back({image, name, {}});
-    heatmaps.push_back(
-        {magmaHeatmap(flip),
-         name + " vs reference",
-         {"RMSE " + fixed(difference.rmse, 3) + "  PSNR " + fixed(difference.psnr, 2) + " dB",
-          "SSIM " + fixed(ssim, 4) + "  FLIP " + fixed(flip.mean, 4),
-          "max difference " + std::to_string(difference.maxDifference) + "/255"}});
-    report["modes"].push_back({{"mode", name},
-                               {"rmse", difference.rmse},
-                               {"psnr", difference.psnr},
-                               {"ssim", ssim},
-                               {"flip", flip.mean},
-                               {"maxDifference", difference.maxDifference}});
-    std::printf("%-12s %10.3f %10.2f %8d %8.4f %10.4f\n", name.c_str(), difference.rmse,
+    std::vector<std::string> lines{
+        "RMSE " + fixed(difference.rmse, 3) + "  PSNR " + fixed(difference.psnr, 2) + " dB",
+        "SSIM " + fixed(ssim, 4) + "  FLIP " + fixed(flip.mean, 4),
+        "max difference " + std::to_string(difference.maxDifference) + "/255"};
+    nlohmann::json numbers = {
+        {"mode", name}, {"rmse", difference.rmse}, {"psnr", difference.psnr},
+        {"ssim", ssim}, {"flip", flip.mean},       {"maxDifference", difference.maxDifference}};
+    std::printf("%-12s %10.3f %10.2f %8d %8.4f %10.4f", name.c_str(), difference.rmse,
                 difference.psnr, difference.maxDifference, ssim, flip.mean);
+    if (regions) {
+      const double hitting = meanOver(flip, *regions, ReflectionRegion::HitsObject);
+      const double escaping = meanOver(flip, *regions, ReflectionRegion::Escapes);
+      lines.push_back("FLIP hit " + fixed(hitting, 4) + "  escape " + fixed(escaping, 4));
+      numbers["flipHitsObject"] = hitting;
+      numbers["flipEscapes"] = escaping;
+      std::printf("   FLIP where the reflection hits an object %.4f, escapes %.4f", hitting,
+                  escaping);
+    }
+    std::printf("\n");
+    heatmaps.push_back({magmaHeatmap(flip), name + " vs reference", lines});
+    report["modes"].push_back(numbers);
   }
-  writeImage(composeSheet({renders, heatmaps}), sheetPath);
+  std::vector<std::vector<SheetCell>> sheet{renders, heatmaps};
+  if (!regionRow.empty()) sheet.push_back(regionRow);
+  writeImage(composeSheet(sheet), sheetPath);
   writeTextFile(jsonPath, report.dump(2) + "\n");
   std::printf("wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
   return finishWithValidation(*context, 0);
