@@ -462,7 +462,7 @@ const std::vector<std::string> kBenchColumns = {"scene",         "width",
 TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   CommandResult r = run("bench default -o " + out("b") +
                         " --size 64x36 --frames 3 --rounds 1 --modes flat,phong --tess 0.5,1 "
-                        "--msaa 1,4");
+                        "--msaa 1,4 --reference raster --metric rmse");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   auto rows = csvRows(readText(out("b/results.csv")));
   ASSERT_EQ(rows.size(), 1u + 2 * 2 * 2) << "header + models x tessellations x sample counts";
@@ -491,7 +491,7 @@ TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
 TEST_F(Cli, BenchSweepsTextureFilters) {
   CommandResult r = run("bench mip-plane -o " + out("f") +
                         " --size 96x54 --frames 3 --rounds 1 --modes phong --tess 1 --msaa 1 "
-                        "--filters nearest,trilinear");
+                        "--filters nearest,trilinear --reference raster --metric rmse");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   auto rows = csvRows(readText(out("f/results.csv")));
   ASSERT_EQ(rows.size(), 3u);
@@ -525,10 +525,33 @@ TEST_F(Cli, QualityWithLooseBoundPicksTheCheapestBenchedSetting) {
 
 // RMSE 0 is met only by the reference's own setting: Phong, 4x tessellation, 4x MSAA.
 TEST_F(Cli, QualityWithTightestBoundPicksOnlyTheExactSetting) {
-  CommandResult r = run("render default -o " + out("q.png") + " --size 64x36 --msaa 4 --quality 0");
+  CommandResult r = run("render default -o " + out("q.png") +
+                        " --size 64x36 --msaa 4 --quality 0 --reference raster --metric rmse");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("chose phong t4 4x"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("quick sweep"), std::string::npos) << r.output;
+}
+
+// Without --reference and --metric, bench and render --quality measure mean
+// FLIP against the traced reference: the CSV names it, the sweep says so,
+// and a FLIP bound (which lies in 0..1) picks a setting that meets it.
+TEST_F(Cli, BenchAndQualityDefaultToTheTracedReferenceAndFlip) {
+  ASSERT_EQ(run("bench spheres -o " + out("b") +
+                " --size 64x36 --frames 3 --rounds 1 --modes phong --tess 1 --msaa 1")
+                .exitCode,
+            0);
+  auto rows = csvRows(readText(out("b/results.csv")));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1][15], "trace");
+  const double flip = std::stod(rows[1][19]);
+  EXPECT_GT(flip, 0.0);
+  EXPECT_LT(flip, 1.0);
+  CommandResult r = run("render spheres -o " + out("q.png") + " --size 64x36 --quality 0.2");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("quality: flip <= 0.2, from a quick sweep against the trace reference"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("<- chosen"), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, UnreachableQualityIsAnInputError) {

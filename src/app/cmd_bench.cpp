@@ -33,8 +33,8 @@ struct BenchCommandOptions {
   std::string modes = "unlit,flat,gouraud,phong,blinn-phong";
   std::vector<float> tessellations{0.5f, 1.0f, 2.0f};
   std::vector<uint32_t> msaa{1, 4};
-  std::string reference = "raster";
-  std::string metric = "rmse";
+  std::string reference = "trace";
+  std::string metric = "flip";
   std::string filters = "material";
   uint32_t frames = 60;
   uint32_t rounds = 2;
@@ -243,12 +243,13 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command
       ->add_option("--reference", options->reference,
-                   "What each setting's error is measured against: raster")
+                   "What each setting's error is measured against: trace (the CPU Whitted ray "
+                   "tracer, 4 spp) or raster (Phong, 4x tessellation, 4x MSAA)")
       ->capture_default_str();
   command
       ->add_option("--metric", options->metric,
-                   "Error metric of the charts and the Pareto front: rmse or psnr (the CSV "
-                   "has every metric)")
+                   "Error metric of the charts and the Pareto front: flip (mean FLIP), rmse, "
+                   "psnr or ssim (the CSV has every metric)")
       ->capture_default_str();
   command
       ->add_option("--frames", options->frames,

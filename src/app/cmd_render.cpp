@@ -36,8 +36,8 @@ struct RenderOptions {
   bool mipTint = false;
   std::string depth = "d32f";
   std::optional<double> quality;  // a bound in `metric`'s units
-  std::string metric = "rmse";
-  std::string reference = "raster";
+  std::string metric = "flip";
+  std::string reference = "trace";
   std::string benchFolder;  // cached bench results; empty: a quick sweep
 };
 
@@ -255,13 +255,14 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       command
           ->add_option("--quality", options->quality,
                        "Render with the cheapest model and tessellation whose error meets X in "
-                       "--metric units: an RMSE ceiling, or a PSNR floor in dB")
+                       "--metric units: a mean FLIP or RMSE ceiling, or a PSNR (dB) or SSIM floor")
           ->excludes(mode)
           ->excludes(tess);
-  command->add_option("--metric", options->metric, "Error metric of --quality: rmse or psnr")
+  command->add_option("--metric", options->metric, "Error metric of --quality: flip (mean FLIP), rmse, psnr or ssim")
       ->capture_default_str()
       ->needs(quality);
-  command->add_option("--reference", options->reference, "What --quality measures against: raster")
+  command->add_option("--reference", options->reference, "What --quality measures against: trace (the CPU Whitted ray tracer, 4 spp) or raster "
+                      "(Phong, 4x tessellation, 4x MSAA)")
       ->capture_default_str()
       ->needs(quality);
   command
