@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -244,6 +245,21 @@ TEST_F(Cli, CompareKeepsTheRasterReference) {
       run("compare -o " + out("sheet.png") + " --size 64x36 --modes phong --reference raster");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(readText(out("sheet.json")).find("4x MSAA"), std::string::npos);
+}
+
+// On a scene with an environment the sheet gains the traced reflection
+// regions and each mode's FLIP split by them; a third row makes it taller.
+TEST_F(Cli, CompareSplitsEnvironmentMappingErrorByReflectionRegion) {
+  CommandResult r = run("compare env -o " + out("sheet.png") + " --size 96x54 --modes phong");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_GE(pngSize(out("sheet.png")).second, 3u * 54u);
+  const nlohmann::json report = nlohmann::json::parse(readText(out("sheet.json")));
+  EXPECT_GT(report["reflectionRegions"]["hitsObjectPixels"].get<int>(), 50);
+  EXPECT_GT(report["reflectionRegions"]["escapesPixels"].get<int>(), 50);
+  const nlohmann::json& phong = report["modes"][0];
+  EXPECT_GT(phong["flipHitsObject"].get<double>(), phong["flipEscapes"].get<double>());
+  EXPECT_NE(r.output.find("FLIP where the reflection hits an object"), std::string::npos)
+      << r.output;
 }
 
 TEST_F(Cli, CompareUnknownReferenceIsAnInputError) {
