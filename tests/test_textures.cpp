@@ -12,6 +12,7 @@
 #include "core/image.h"
 #include "core/procedural_textures.h"
 #include "core/texture.h"
+#include "core/trace_textures.h"
 #include "core/uv_mapping.h"
 
 namespace shadelab {
@@ -217,6 +218,37 @@ TEST(SMapping, ApplyReplacesUvsAndRecomputesUnitTangents) {
     EXPECT_NEAR(length, 1.0f, 1e-4f);
     EXPECT_NEAR(glm::dot(glm::vec3(vertex.tangent), vertex.normal), 0.0f, 1e-4f);
   }
+}
+
+// The tracer's address modes, as Vulkan defines them: repeat wraps,
+// mirrored repeat reflects every other period, clamp-to-edge holds the edge.
+TEST(TraceTextureSampling, WrapModesFollowVulkansAddressModes) {
+  const int32_t repeat[] = {2, 3, 0, 1, 2, 3, 0, 1};
+  const int32_t mirrored[] = {1, 0, 0, 1, 2, 3, 3, 2};
+  const int32_t clamped[] = {0, 0, 0, 1, 2, 3, 3, 3};
+  for (int32_t i = -2; i < 6; ++i) {
+    EXPECT_EQ(wrapTexel(i, 4, TextureWrap::Repeat), repeat[i + 2]) << i;
+    EXPECT_EQ(wrapTexel(i, 4, TextureWrap::MirroredRepeat), mirrored[i + 2]) << i;
+    EXPECT_EQ(wrapTexel(i, 4, TextureWrap::ClampToEdge), clamped[i + 2]) << i;
+  }
+}
+
+// A 4x2 data texture: its chain has 3 levels (4x2, 2x1, 1x1), the last the
+// mean of the texels; level 0 returns a texel at its centre, and a
+// fractional level mixes the two levels around it.
+TEST(TraceTextureSampling, MipChainAveragesAndTrilinearMixes) {
+  Texture texture{"ramp", 4, 2, std::vector<uint8_t>(4 * 2 * 4, 255), false};
+  const uint8_t values[8] = {0, 40, 80, 120, 160, 200, 240, 0};
+  for (size_t i = 0; i < 8; ++i) texture.rgba8[4 * i] = values[i];
+  const TraceTexture traced(texture);
+  ASSERT_EQ(traced.levelCount(), 3u);
+  const SamplerDesc sampler{TextureWrap::Repeat, TextureWrap::Repeat};
+  EXPECT_NEAR(traced.sample({0.375f, 0.25f}, 0.0f, sampler).r, 40.0f / 255.0f, 1e-6f);
+  const float mean = 840.0f / 8.0f / 255.0f;
+  EXPECT_NEAR(traced.sample({0.3f, 0.7f}, 2.0f, sampler).r, mean, 1e-6f);
+  const float level1 = traced.sample({0.3f, 0.7f}, 1.0f, sampler).r;
+  EXPECT_NEAR(traced.sample({0.3f, 0.7f}, 1.5f, sampler).r, 0.5f * (level1 + mean), 1e-6f);
+  EXPECT_NEAR(traced.sample({0.3f, 0.7f}, 9.0f, sampler).r, mean, 1e-6f);  // clamped to the last
 }
 
 }  // namespace
