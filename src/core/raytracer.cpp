@@ -136,20 +136,10 @@ glm::vec2 RayTracer::TracedObject::uvAt(glm::vec3 point, glm::vec3 normal,
       return planeUv(point, size);
     case Surface::Box:
       return boxFaceUv(point, halfExtents, normal);
-    case Surface::Mesh: {
-      // Barycentric coordinates of the point projected onto the triangle's plane.
-      const Vertex& a = mesh->vertices[mesh->indices[3 * triangle]];
-      const Vertex& b = mesh->vertices[mesh->indices[3 * triangle + 1]];
-      const Vertex& c = mesh->vertices[mesh->indices[3 * triangle + 2]];
-      const glm::vec3 e0 = b.position - a.position, e1 = c.position - a.position;
-      const glm::vec3 d = point - a.position;
-      const float d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
-      const float denominator = d00 * d11 - d01 * d01;
-      if (!(std::abs(denominator) > 0.0f)) return a.uv;
-      const float v = (d11 * glm::dot(d, e0) - d01 * glm::dot(d, e1)) / denominator;
-      const float w = (d00 * glm::dot(d, e1) - d01 * glm::dot(d, e0)) / denominator;
-      return (1.0f - v - w) * a.uv + v * b.uv + w * c.uv;
-    }
+    case Surface::Mesh:
+      return triangleUv(point, mesh->vertices[mesh->indices[3 * triangle]],
+                        mesh->vertices[mesh->indices[3 * triangle + 1]],
+                        mesh->vertices[mesh->indices[3 * triangle + 2]]);
   }
   return glm::vec2(0.0f);
 }

@@ -134,6 +134,17 @@ glm::vec2 planeUv(glm::vec3 point, float size) {
   return {point.x / size + 0.5f, 0.5f - point.z / size};  // as makePlane
 }
 
+glm::vec2 triangleUv(glm::vec3 point, const Vertex& a, const Vertex& b, const Vertex& c) {
+  const glm::vec3 e0 = b.position - a.position, e1 = c.position - a.position;
+  const glm::vec3 d = point - a.position;
+  const float d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
+  const float denominator = d00 * d11 - d01 * d01;
+  if (!(std::abs(denominator) > 0.0f)) return a.uv;
+  const float v = (d11 * glm::dot(d, e0) - d01 * glm::dot(d, e1)) / denominator;
+  const float w = (d00 * glm::dot(d, e1) - d01 * glm::dot(d, e0)) / denominator;
+  return (1.0f - v - w) * a.uv + v * b.uv + w * c.uv;
+}
+
 glm::vec2 boxFaceUv(glm::vec3 point, glm::vec3 halfExtents, glm::vec3 faceNormal) {
   const BoxFace* face = &kBoxFaces[0];
   for (const BoxFace& candidate : kBoxFaces)

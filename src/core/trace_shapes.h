@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "core/mesh.h"
 #include "core/ray.h"
 
 namespace shadelab {
@@ -44,6 +45,9 @@ bool intersectBox(const Ray& ray, glm::vec3 halfExtents, float tMin, float tMax,
 // the surface (a ray footprint's corners) get the uv extended.
 glm::vec2 planeUv(glm::vec3 point, float size);
 glm::vec2 boxFaceUv(glm::vec3 point, glm::vec3 halfExtents, glm::vec3 faceNormal);
+// The uv interpolated at the barycentric coordinates of `point` projected
+// onto the plane of triangle abc (extrapolated outside it).
+glm::vec2 triangleUv(glm::vec3 point, const Vertex& a, const Vertex& b, const Vertex& c);
 
 // How many crossings lie in tMin < t < tMax.
 uint32_t countInRange(const Crossings& crossings, float tMin, float tMax);
