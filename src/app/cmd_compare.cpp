@@ -62,6 +62,30 @@ std::string fixed(double value, int digits) {
   return out.str();
 }
 
+// Environment mapping against traced reflection (core/reflection_regions.h):
+// the regions as a sheet cell (their sizes also into the report) and each
+// mode's FLIP split by them.
+SheetCell regionCell(const ReflectionRegions& regions, nlohmann::json& report) {
+  const uint64_t hits = regions.count(ReflectionRegion::HitsObject);
+  const uint64_t escapes = regions.count(ReflectionRegion::Escapes);
+  report["reflectionRegions"] = {{"hitsObjectPixels", hits}, {"escapesPixels", escapes}};
+  return {
+      regionImage(regions),
+      "traced reflection paths",
+      {"orange: hit an object (" + std::to_string(hits) + " px)",
+       "blue: escape (" + std::to_string(escapes) + " px)", "env mapping shows only what escapes"}};
+}
+
+void splitByRegion(const MetricMap& flip, const ReflectionRegions& regions,
+                   std::vector<std::string>& lines, nlohmann::json& numbers) {
+  const double hitting = meanOver(flip, regions, ReflectionRegion::HitsObject);
+  const double escaping = meanOver(flip, regions, ReflectionRegion::Escapes);
+  lines.push_back("FLIP hit " + fixed(hitting, 4) + "  escape " + fixed(escaping, 4));
+  numbers["flipHitsObject"] = hitting;
+  numbers["flipEscapes"] = escaping;
+  std::printf("   FLIP where the reflection hits an object %.4f, escapes %.4f", hitting, escaping);
+}
+
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Size cell = parseSize(options.size, "--size");
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
@@ -100,21 +124,9 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
                            {"size", options.size},
                            {"reference", description},
                            {"modes", nlohmann::json::array()}};
-  // Environment mapping against traced reflection: FLIP split by where the
-  // traced specular path goes (core/reflection_regions.h).
   std::optional<ReflectionRegions> regions;
-  std::vector<SheetCell> regionRow;
-  if (scene.environment.present() && reference.name == "trace") {
+  if (scene.environment.present() && reference.name == "trace")
     regions = classifyReflections(scene, cell.width, cell.height);
-    const uint64_t hits = regions->count(ReflectionRegion::HitsObject);
-    const uint64_t escapes = regions->count(ReflectionRegion::Escapes);
-    regionRow.push_back({regionImage(*regions),
-                         "traced reflection paths",
-                         {"orange: hit an object (" + std::to_string(hits) + " px)",
-                          "blue: escape (" + std::to_string(escapes) + " px)",
-                          "env mapping shows only what escapes"}});
-    report["reflectionRegions"] = {{"hitsObjectPixels", hits}, {"escapesPixels", escapes}};
-  }
   std::printf("reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
   std::printf("%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
               "mean FLIP");
@@ -134,21 +146,13 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
         {"ssim", ssim}, {"flip", flip.mean},       {"maxDifference", difference.maxDifference}};
     std::printf("%-12s %10.3f %10.2f %8d %8.4f %10.4f", name.c_str(), difference.rmse,
                 difference.psnr, difference.maxDifference, ssim, flip.mean);
-    if (regions) {
-      const double hitting = meanOver(flip, *regions, ReflectionRegion::HitsObject);
-      const double escaping = meanOver(flip, *regions, ReflectionRegion::Escapes);
-      lines.push_back("FLIP hit " + fixed(hitting, 4) + "  escape " + fixed(escaping, 4));
-      numbers["flipHitsObject"] = hitting;
-      numbers["flipEscapes"] = escaping;
-      std::printf("   FLIP where the reflection hits an object %.4f, escapes %.4f", hitting,
-                  escaping);
-    }
+    if (regions) splitByRegion(flip, *regions, lines, numbers);
     std::printf("\n");
     heatmaps.push_back({magmaHeatmap(flip), name + " vs reference", lines});
     report["modes"].push_back(numbers);
   }
   std::vector<std::vector<SheetCell>> sheet{renders, heatmaps};
-  if (!regionRow.empty()) sheet.push_back(regionRow);
+  if (regions) sheet.push_back({regionCell(*regions, report)});
   writeImage(composeSheet(sheet), sheetPath);
   writeTextFile(jsonPath, report.dump(2) + "\n");
   std::printf("wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
