@@ -11,6 +11,9 @@
 // Shadow rays are dimmed by kt of each transparent surface they cross (no
 // refraction of light, as in Whitted 1980). Surfaces are two-sided: a ray
 // hitting the back of one sees it lit with the normal turned towards the ray.
+// Textures (diffuse, normal and height maps) are sampled as the textured
+// forward shaders sample them, filtered over the ray's footprint
+// (core/trace_material.h); rays that miss see the environment.
 #include <cstdint>
 #include <functional>
 #include <memory>
