@@ -135,7 +135,8 @@ TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
 }
 
 TEST(GlslCompiler, RunTimeSpirvEqualsTheBuildsSpirv) {
-  for (const char* name : {"forward.vert", "forward_flat.geom", "forward.frag"}) {
+  for (const char* name : {"forward.vert", "forward_environment.vert", "forward_flat.geom",
+                           "forward.frag", "forward_environment.frag", "forward_flat.frag"}) {
     GlslCompileResult result = compileGlslFile(SHADELAB_SHADER_SOURCE_DIR, name);
     ASSERT_TRUE(result.ok()) << result.log;
     std::span<const uint32_t> built = embeddedSpirv(name);
