@@ -1,4 +1,4 @@
 #version 460
-// The forward fragment stage of the lit and unlit models without an environment (forward_fragment.glsl).
+// The forward fragment stage of Phong, Blinn-Phong and unlit (forward_fragment.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "forward_fragment.glsl"

@@ -58,9 +58,17 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
 }
 
 std::vector<std::string> ForwardPass::shaderNames() {
-  return {"forward.vert",          "forward_environment.vert",   "forward_flat.geom",
-          "forward.frag",          "forward_environment.frag",   "forward_flat.frag",
-          "forward_textured.vert", "forward_textured_flat.geom", "forward_textured.frag"};
+  return {"forward.vert",
+          "forward_gouraud.vert",
+          "forward_gouraud_environment.vert",
+          "forward_flat.geom",
+          "forward.frag",
+          "forward_gouraud.frag",
+          "forward_gouraud_environment.frag",
+          "forward_flat.frag",
+          "forward_textured.vert",
+          "forward_textured_flat.geom",
+          "forward_textured.frag"};
 }
 
 void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
@@ -128,11 +136,15 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
     addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward.vert"));
     addStage(VK_SHADER_STAGE_GEOMETRY_BIT, module("forward_flat.geom"));
     addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward_flat.frag"));
+  } else if (model == ShadingModel::Gouraud) {
+    const char* vertex = environment ? "forward_gouraud_environment.vert" : "forward_gouraud.vert";
+    const char* fragment =
+        environment ? "forward_gouraud_environment.frag" : "forward_gouraud.frag";
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, module(vertex));
+    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module(fragment));
   } else {
-    addStage(VK_SHADER_STAGE_VERTEX_BIT,
-             module(environment ? "forward_environment.vert" : "forward.vert"));
-    addStage(VK_SHADER_STAGE_FRAGMENT_BIT,
-             module(environment ? "forward_environment.frag" : "forward.frag"));
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward.vert"));
+    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward.frag"));
   }
 
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
