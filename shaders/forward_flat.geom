@@ -10,22 +10,10 @@ layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
 layout(location = 0) in vec3 inPosition[];
-layout(location = 1) in vec3 inNormal[];
-layout(location = 2) in vec3 inColor[];
-layout(location = 3) flat in vec3 inFlatColor[];
-// The vertex stage's environment outputs (Gouraud's): unused here, declared to match.
-layout(location = 8) in vec4 inEnvReflected[];
-layout(location = 9) in vec4 inEnvRefracted[];
-layout(location = 10) flat in vec4 inFlatEnvReflected[];
-layout(location = 11) flat in vec4 inFlatEnvRefracted[];
 
-layout(location = 0) out vec3 outPosition;
-layout(location = 1) out vec3 outNormal;
-layout(location = 2) out vec3 outColor;
+// What forward_flat.frag reads: one colour and one environment lookup per triangle.
 layout(location = 3) flat out vec3 outFlatColor;
-layout(location = 8) out vec4 outEnvReflected;
-layout(location = 9) out vec4 outEnvRefracted;
-layout(location = 10) flat out vec4 outFlatEnvReflected;  // one lookup per triangle, like its colour
+layout(location = 10) flat out vec4 outFlatEnvReflected;
 layout(location = 11) flat out vec4 outFlatEnvRefracted;
 
 void main() {
@@ -38,12 +26,7 @@ void main() {
   if (environmentEnabled) environment = environmentDirections(center, faceNormal, draw.optics.z);
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
-    outPosition = inPosition[i];
-    outNormal = faceNormal;
-    outColor = color;
     outFlatColor = color;
-    outEnvReflected = environment.reflected;
-    outEnvRefracted = environment.refracted;
     outFlatEnvReflected = environment.reflected;
     outFlatEnvRefracted = environment.refracted;
     EmitVertex();

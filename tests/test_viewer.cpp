@@ -318,7 +318,7 @@ void replaceInFile(const fs::path& file, const std::string& from, const std::str
 TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   fs::path shaders = shaderCopy(dir);
   // The edited shader swaps red and blue: a change that is easy to measure.
-  replaceInFile(shaders / "forward.frag",
+  replaceInFile(shaders / "forward_fragment.glsl",
                 "outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);",
                 "outColor = vec4(color.bgr, environmentEnabled ? 1.0 : draw.kd.w);");
   CommandResult r =
@@ -346,14 +346,14 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
 
 TEST_F(Viewer, ShaderCompileErrorIsShownAndLastGoodPipelineKept) {
   fs::path shaders = shaderCopy(dir);
-  replaceInFile(shaders / "forward.frag",
+  replaceInFile(shaders / "forward_fragment.glsl",
                 "outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);",
                 "outColor = colour;");
   CommandResult r = view("key O\nkey R\nframes 2\nscreenshot after.png\n", "",
                          "SHADELAB_SHADER_DIR=" + shaders.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("shader reload failed"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("forward.frag"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("forward_fragment.glsl"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("'colour' : undeclared identifier"), std::string::npos) << r.output;
   EXPECT_TRUE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong),
                            readImageU8(path("after.png"))));

@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "core/glsl_compiler.h"
 #include "core/shader.h"
+#include "passes/renderer.h"
 #include "view/camera_controller.h"
 #include "view/viewer_script.h"
 #include "view/window.h"
@@ -135,7 +136,7 @@ TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
 }
 
 TEST(GlslCompiler, RunTimeSpirvEqualsTheBuildsSpirv) {
-  for (const char* name : {"forward.vert", "forward_flat.geom", "forward.frag"}) {
+  for (const std::string& name : Renderer::shaderNames()) {
     GlslCompileResult result = compileGlslFile(SHADELAB_SHADER_SOURCE_DIR, name);
     ASSERT_TRUE(result.ok()) << result.log;
     std::span<const uint32_t> built = embeddedSpirv(name);

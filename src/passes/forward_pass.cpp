@@ -54,27 +54,26 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
   VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
   layout_ = PipelineLayout(device, layout);
 
-  vertex_ = loadShader(device, "forward.vert");
-  flatGeometry_ = loadShader(device, "forward_flat.geom");
-  fragment_ = loadShader(device, "forward.frag");
-  texturedVertex_ = loadShader(device, "forward_textured.vert");
-  texturedFlatGeometry_ = loadShader(device, "forward_textured_flat.geom");
-  texturedFragment_ = loadShader(device, "forward_textured.frag");
+  for (const std::string& name : shaderNames()) modules_[name] = loadShader(device, name);
 }
 
 std::vector<std::string> ForwardPass::shaderNames() {
-  return {"forward.vert",          "forward_flat.geom",          "forward.frag",
-          "forward_textured.vert", "forward_textured_flat.geom", "forward_textured.frag"};
+  return {"forward.vert",
+          "forward_gouraud.vert",
+          "forward_gouraud_environment.vert",
+          "forward_flat.geom",
+          "forward.frag",
+          "forward_gouraud.frag",
+          "forward_gouraud_environment.frag",
+          "forward_flat.frag",
+          "forward_textured.vert",
+          "forward_textured_flat.geom",
+          "forward_textured.frag"};
 }
 
 void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
-  VkDevice device = context_.device();
-  vertex_ = createShaderModule(device, spirv.at("forward.vert"));
-  flatGeometry_ = createShaderModule(device, spirv.at("forward_flat.geom"));
-  fragment_ = createShaderModule(device, spirv.at("forward.frag"));
-  texturedVertex_ = createShaderModule(device, spirv.at("forward_textured.vert"));
-  texturedFlatGeometry_ = createShaderModule(device, spirv.at("forward_textured_flat.geom"));
-  texturedFragment_ = createShaderModule(device, spirv.at("forward_textured.frag"));
+  for (auto& [name, module] : modules_)
+    module = createShaderModule(context_.device(), spirv.at(name));
   pipelines_.clear();
 }
 
@@ -124,11 +123,29 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
     info.pSpecializationInfo = &specialization;
     stages.push_back(info);
   };
-  addStage(VK_SHADER_STAGE_VERTEX_BIT, textured ? texturedVertex_ : vertex_);
-  // Flat shading needs the whole triangle to find its geometric normal.
-  if (model == ShadingModel::Flat)
-    addStage(VK_SHADER_STAGE_GEOMETRY_BIT, textured ? texturedFlatGeometry_ : flatGeometry_);
-  addStage(VK_SHADER_STAGE_FRAGMENT_BIT, textured ? texturedFragment_ : fragment_);
+  // Flat shading needs the whole triangle to find its geometric normal. The
+  // untextured stages come in variants that differ only in the varyings they
+  // pass (shaders/forward_vertex.glsl says why).
+  bool flat = model == ShadingModel::Flat;
+  auto module = [&](const char* name) { return modules_.at(name).get(); };
+  if (textured) {
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward_textured.vert"));
+    if (flat) addStage(VK_SHADER_STAGE_GEOMETRY_BIT, module("forward_textured_flat.geom"));
+    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward_textured.frag"));
+  } else if (flat) {
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward.vert"));
+    addStage(VK_SHADER_STAGE_GEOMETRY_BIT, module("forward_flat.geom"));
+    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward_flat.frag"));
+  } else if (model == ShadingModel::Gouraud) {
+    const char* vertex = environment ? "forward_gouraud_environment.vert" : "forward_gouraud.vert";
+    const char* fragment =
+        environment ? "forward_gouraud_environment.frag" : "forward_gouraud.frag";
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, module(vertex));
+    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module(fragment));
+  } else {
+    addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward.vert"));
+    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward.frag"));
+  }
 
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   // Only the attributes the shaders read: lavapipe fetches every declared

@@ -69,12 +69,7 @@ class ForwardPass {
   DescriptorSetLayout setLayout_;
   DescriptorSetLayout materialSetLayout_;
   PipelineLayout layout_;
-  ShaderModule vertex_;
-  ShaderModule flatGeometry_;
-  ShaderModule fragment_;
-  ShaderModule texturedVertex_;
-  ShaderModule texturedFlatGeometry_;
-  ShaderModule texturedFragment_;
+  std::map<std::string, ShaderModule> modules_;  // by source name: every one of shaderNames()
   std::map<VariantKey, Pipeline> pipelines_;
 };
 

@@ -1,0 +1,57 @@
+// Forward pass, fragment stage (forward.frag, forward_gouraud.frag,
+// forward_gouraud_environment.frag, forward_flat.frag): Phong and Blinn-Phong
+// evaluate the equation per fragment with the interpolated, renormalised
+// normal; flat and Gouraud output the colour computed earlier; unlit writes
+// the diffuse colour as is. With an environment, every lit model adds its
+// term (environment.glsl), from directions found per fragment, per vertex
+// (Gouraud) or per triangle (flat).
+// The variants differ only in their inputs (forward_vertex.glsl says why):
+// FLAT_VARYINGS: the flat geometry stage's per-triangle colour and directions;
+// VERTEX_LIGHTING: Gouraud's vertex colour, with ENVIRONMENT_VARYINGS its
+// per-vertex directions; neither: the eye-space position and normal.
+#extension GL_GOOGLE_include_directive : require
+#include "environment.glsl"
+
+#if defined(FLAT_VARYINGS)
+layout(location = 3) flat in vec3 inFlatColor;
+layout(location = 10) flat in vec4 inFlatEnvReflected;
+layout(location = 11) flat in vec4 inFlatEnvRefracted;
+#elif defined(VERTEX_LIGHTING)
+layout(location = 2) in vec3 inColor;
+#ifdef ENVIRONMENT_VARYINGS
+layout(location = 8) in vec4 inEnvReflected;
+layout(location = 9) in vec4 inEnvRefracted;
+#endif
+#else
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+#endif
+
+layout(location = 0) out vec4 outColor;
+
+void main() {
+#if defined(FLAT_VARYINGS)
+  vec3 color = inFlatColor;
+  EnvironmentDirections environment =
+      EnvironmentDirections(inFlatEnvReflected, inFlatEnvRefracted);
+#elif defined(VERTEX_LIGHTING)
+  vec3 color = inColor;
+#ifdef ENVIRONMENT_VARYINGS
+  EnvironmentDirections environment = EnvironmentDirections(inEnvReflected, inEnvRefracted);
+#else
+  EnvironmentDirections environment = EnvironmentDirections(vec4(0.0), vec4(0.0));
+#endif
+#else
+  vec3 color = shadingModel == SHADING_UNLIT
+                   ? draw.kd.rgb
+                   : illuminate(inPosition, inNormal, drawMaterial(),
+                                shadingModel == SHADING_BLINN_PHONG);
+  EnvironmentDirections environment =
+      environmentDirections(inPosition, inNormal, draw.optics.z);
+#endif
+  if (environmentEnabled && shadingModel != SHADING_UNLIT)
+    color += environmentColor(environment, draw.optics.x, draw.optics.y);
+  // kd.w: opacity, 1 - transparency, for the blended draws. With the
+  // environment term the transmitted light is env(T), so the surface is opaque.
+  outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);
+}
