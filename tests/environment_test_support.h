@@ -24,6 +24,16 @@ inline float angleBetweenDegrees(glm::vec3 a, glm::vec3 b) {
   return glm::degrees(std::acos(std::clamp(c, -1.0f, 1.0f)));
 }
 
+// A sky of one colour in every direction, sun off.
+inline Environment constantSky(glm::vec3 colour) {
+  Environment environment;
+  environment.kind = EnvironmentKind::Sky;
+  environment.sky.zenith = environment.sky.horizon = environment.sky.ground = colour;
+  environment.sky.sunSizeDegrees = 0.0f;
+  environment.resolution = 32;
+  return environment;
+}
+
 // A panorama of `colour(direction)` at each texel centre.
 inline Environment panoramaOf(uint32_t width, uint32_t height, uint32_t resolution,
                               const std::function<glm::vec3(glm::vec3)>& colour) {

@@ -16,15 +16,6 @@
 namespace shadelab::test {
 namespace {
 
-Environment constantSky(glm::vec3 colour) {
-  Environment environment;
-  environment.kind = EnvironmentKind::Sky;
-  environment.sky.zenith = environment.sky.horizon = environment.sky.ground = colour;
-  environment.sky.sunSizeDegrees = 0.0f;
-  environment.resolution = 32;
-  return environment;
-}
-
 Material environmentOnly(float reflectivity, float transparency) {
   Material material;
   material.ka = material.kd = material.ks = glm::vec3(0.0f);

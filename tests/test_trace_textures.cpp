@@ -15,6 +15,7 @@
 #include "core/scene_loader.h"
 #include "core/texture.h"
 #include "core/transform.h"
+#include "environment_test_support.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {
@@ -97,15 +98,6 @@ TEST(TraceTextures, MinifiedCheckerAveragesToTheLinearMean) {
   std::printf("minified checker: worst |traced - linear mean| %.5f (the colours are %.3f apart)\n",
               worst, glm::length(stored(kHigh) - stored(kLow)));
   EXPECT_LE(worst, 0.01f);
-}
-
-Environment constantSky(glm::vec3 colour) {
-  Environment environment;
-  environment.kind = EnvironmentKind::Sky;
-  environment.sky.zenith = environment.sky.horizon = environment.sky.ground = colour;
-  environment.sky.sunSizeDegrees = 0.0f;
-  environment.resolution = 32;
-  return environment;
 }
 
 using TraceEnvironment = GpuTest;
