@@ -57,18 +57,18 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
   for (const std::string& name : shaderNames()) modules_[name] = loadShader(device, name);
 }
 
+// The stages of one variant: `base` is forward or forward_textured, and the
+// suffix says which varyings the stages pass (shaders/forward_vertex.glsl).
+static std::vector<std::string> stageNames(const std::string& base) {
+  return {base + ".vert",  base + "_gouraud.vert", base + "_gouraud_environment.vert",
+          base + "_flat.geom", base + ".frag",     base + "_gouraud.frag",
+          base + "_gouraud_environment.frag", base + "_flat.frag"};
+}
+
 std::vector<std::string> ForwardPass::shaderNames() {
-  return {"forward.vert",
-          "forward_gouraud.vert",
-          "forward_gouraud_environment.vert",
-          "forward_flat.geom",
-          "forward.frag",
-          "forward_gouraud.frag",
-          "forward_gouraud_environment.frag",
-          "forward_flat.frag",
-          "forward_textured.vert",
-          "forward_textured_flat.geom",
-          "forward_textured.frag"};
+  std::vector<std::string> names = stageNames("forward");
+  for (const std::string& name : stageNames("forward_textured")) names.push_back(name);
+  return names;
 }
 
 void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
@@ -124,27 +124,22 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
     stages.push_back(info);
   };
   // Flat shading needs the whole triangle to find its geometric normal. The
-  // untextured stages come in variants that differ only in the varyings they
-  // pass (shaders/forward_vertex.glsl says why).
-  bool flat = model == ShadingModel::Flat;
-  auto module = [&](const char* name) { return modules_.at(name).get(); };
-  if (textured) {
-    addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward_textured.vert"));
-    if (flat) addStage(VK_SHADER_STAGE_GEOMETRY_BIT, module("forward_textured_flat.geom"));
-    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward_textured.frag"));
-  } else if (flat) {
-    addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward.vert"));
-    addStage(VK_SHADER_STAGE_GEOMETRY_BIT, module("forward_flat.geom"));
-    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward_flat.frag"));
+  // stages come in variants that differ only in the varyings they pass.
+  std::string base = textured ? "forward_textured" : "forward";
+  auto add = [&](VkShaderStageFlagBits stage, const std::string& name) {
+    addStage(stage, modules_.at(name).get());
+  };
+  if (model == ShadingModel::Flat) {
+    add(VK_SHADER_STAGE_VERTEX_BIT, base + ".vert");
+    add(VK_SHADER_STAGE_GEOMETRY_BIT, base + "_flat.geom");
+    add(VK_SHADER_STAGE_FRAGMENT_BIT, base + "_flat.frag");
   } else if (model == ShadingModel::Gouraud) {
-    const char* vertex = environment ? "forward_gouraud_environment.vert" : "forward_gouraud.vert";
-    const char* fragment =
-        environment ? "forward_gouraud_environment.frag" : "forward_gouraud.frag";
-    addStage(VK_SHADER_STAGE_VERTEX_BIT, module(vertex));
-    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module(fragment));
+    std::string suffix = environment ? "_gouraud_environment" : "_gouraud";
+    add(VK_SHADER_STAGE_VERTEX_BIT, base + suffix + ".vert");
+    add(VK_SHADER_STAGE_FRAGMENT_BIT, base + suffix + ".frag");
   } else {
-    addStage(VK_SHADER_STAGE_VERTEX_BIT, module("forward.vert"));
-    addStage(VK_SHADER_STAGE_FRAGMENT_BIT, module("forward.frag"));
+    add(VK_SHADER_STAGE_VERTEX_BIT, base + ".vert");
+    add(VK_SHADER_STAGE_FRAGMENT_BIT, base + ".frag");
   }
 
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
