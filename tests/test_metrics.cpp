@@ -248,5 +248,13 @@ TEST(Stats, PercentilesInterpolateBetweenRanks) {
   EXPECT_DOUBLE_EQ(median({}), 0.0);
 }
 
+TEST(Stats, MeanCountsTheTailTheMedianIgnores) {
+  // glmark2's FPS is frames over elapsed time: a mean, which slow frames raise.
+  std::vector<double> samples{1.0, 1.0, 1.0, 9.0};
+  EXPECT_DOUBLE_EQ(median(samples), 1.0);
+  EXPECT_DOUBLE_EQ(mean(samples), 3.0);
+  EXPECT_DOUBLE_EQ(mean({}), 0.0);
+}
+
 }  // namespace
 }  // namespace shadelab

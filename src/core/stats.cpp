@@ -15,6 +15,13 @@ double percentile(std::vector<double> samples, double p) {
   return samples[below] * (1.0 - t) + samples[above] * t;
 }
 
+double mean(const std::vector<double>& samples) {
+  if (samples.empty()) return 0.0;
+  double sum = 0.0;
+  for (double sample : samples) sum += sample;
+  return sum / double(samples.size());
+}
+
 size_t warmupFrames(size_t frames) {
   if (frames == 0) return 0;
   return std::min(frames / 10 + 1, frames - 1);

@@ -8,6 +8,8 @@ namespace shadelab {
 // Returns 0 for an empty sample.
 double percentile(std::vector<double> samples, double p);
 inline double median(const std::vector<double>& samples) { return percentile(samples, 50.0); }
+// The arithmetic mean; 0 for an empty sample.
+double mean(const std::vector<double>& samples);
 
 // Frames to leave out of steady-state statistics for a run of `frames`: the
 // first ones include lavapipe's lazy pipeline compile. A tenth plus one,
