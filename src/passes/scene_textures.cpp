@@ -135,8 +135,9 @@ VkSampler SceneTextures::sampler(const SamplerDesc& desc) {
   return samplers_.emplace(desc, Sampler(context_.device(), handle)).first->second;
 }
 
-VkDescriptorSet SceneTextures::writeSet(const Scene& scene, const Material& material,
-                                        const TextureOptions& options) {
+// `scene` is read only by an assertion (unused in release builds).
+VkDescriptorSet SceneTextures::writeSet([[maybe_unused]] const Scene& scene,
+                                        const Material& material, const TextureOptions& options) {
   VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   allocate.descriptorPool = pool_;
   allocate.descriptorSetCount = 1;
