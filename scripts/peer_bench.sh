@@ -27,7 +27,9 @@ export VK_DRIVER_FILES="${VK_DRIVER_FILES:-/usr/share/vulkan/icd.d/lvp_icd.x86_6
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 results="$work/results"
-python3 scripts/glmark2_model.py /usr/share/glmark2/models/cat.3ds "$work/cat.gltf" >&2
+cat3ds=/usr/share/glmark2/models/cat.3ds
+[ -f "$cat3ds" ] || { echo "peer_bench: $cat3ds missing (apt install glmark2-data)" >&2; exit 2; }
+python3 scripts/glmark2_model.py "$cat3ds" "$work/cat.gltf" >&2
 # glmark2's view: the model 5 units in front of the eye, a 60 degree field of
 # view; one point light as glmark2's Phong has it (eye-space (0, 1, 0), 0.8).
 cat > "$work/cat.json" <<'JSON'
@@ -57,9 +59,9 @@ for round in $(seq "$rounds"); do
   done
   echo "round $round of $rounds done" >&2
 done
-# Per mode and renderer: the median over rounds, and the median of the
-# per-round ratios to glmark2.
-printf "%-8s %-40s %10s %17s\n" mode renderer "median ms" "ratio to glmark2"
+# Per mode and renderer: the median over rounds of each run's mean frame time, and the
+# median of the per-round ratios to glmark2.
+printf "%-8s %-40s %20s %17s\n" mode renderer "ms (median of rounds)" "ratio to glmark2"
 awk '
   function median(list,   n, v, i, j, s) {
     n = split(list, v, " ")
@@ -69,6 +71,6 @@ awk '
   { times[$2" "$3] = times[$2" "$3] " " $4; ratios[$2" "$3] = ratios[$2" "$3] " " $4 / peer[$1" "$2] }
   END {
     for (k in times) { split(k, part, " ")
-      printf "%-8s %-40s %10.3f %17s\n", part[1], part[2], median(times[k]),
+      printf "%-8s %-40s %20.3f %17s\n", part[1], part[2], median(times[k]),
              part[2] == "glmark2" ? "1" : sprintf("%.2f", median(ratios[k])) }
   }' "$results" | sort
