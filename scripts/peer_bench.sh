@@ -50,10 +50,10 @@ for round in $(seq "$rounds"); do
     echo "$round $mode glmark2 $(awk -v f="$fps" 'BEGIN{printf "%.3f", 1000/f}')" >> "$results"
     for bin in "${binaries[@]}"; do
       for scene in "${scenes[@]}"; do
-        wall=$("$bin" render "${scene#*=}" --size "$size" --frames 600 --mode "$mode" \
+        mean=$("$bin" render "${scene#*=}" --size "$size" --frames 600 --mode "$mode" \
                  -o "$work/frame.png" 2>&1 | sed -n 's/.*wall median [0-9.]* ms, mean \([0-9.]*\) ms.*/\1/p')
-        [ -n "$wall" ] || { echo "peer_bench: $bin failed on ${scene#*=}" >&2; exit 1; }
-        echo "$round $mode ${scene%%=*}:$bin $wall" >> "$results"
+        [ -n "$mean" ] || { echo "peer_bench: $bin failed on ${scene#*=}" >&2; exit 1; }
+        echo "$round $mode ${scene%%=*}:$bin $mean" >> "$results"
       done
     done
   done
