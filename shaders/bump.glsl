@@ -2,7 +2,7 @@
 // tangent frame (T, B = w cross(N, T), N) by a tangent-space normal map
 // (n = 2 rgb - 1, xy scaled by the bump scale) and/or a height map, whose
 // central differences per texel give n = (-s dh/du, -s dh/dv, 1) with
-// s = bump scale (Blinn 1978; core/procedural_textures.h derives normal maps
+// s = bump scale (Blinn 1978; core/scene/procedural_textures.h derives normal maps
 // with the same formula). With both, their normals are combined as
 // (n1.xy + n2.xy, n1.z n2.z) ("whiteout" blending).
 #ifndef BUMP_GLSL

@@ -1,4 +1,4 @@
-// Cube map and panorama addressing (mirrored in src/core/environment.cpp).
+// Cube map and panorama addressing (mirrored in src/core/scene/environment.cpp).
 // Faces are array layers 0..5 = +X, -X, +Y, -Y, +Z, -Z with (s, t) as in
 // Vulkan's cube map face selection table; the panorama's centre looks along
 // -Z, u = 0.75 along +X, v = 0 straight up.

@@ -1,4 +1,4 @@
-// Environment mapping in the forward pass (mirrored in src/core/optics.cpp):
+// Environment mapping in the forward pass (mirrored in src/core/trace/optics.cpp):
 //   R = 2 (N.V) N - V,
 //   T by Snell's law with eta = 1 / ior (entering from air), T = R under
 //     total internal reflection,

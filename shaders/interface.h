@@ -96,7 +96,7 @@ struct DrawConstants {
   vec4 optics;   // environment term: x = reflectivity kr, y = transparency kt, z = ior
 };
 
-// The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/environment.cpp).
+// The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/scene/environment.cpp).
 struct SkyParameters {
   vec4 zenith;        // rgb, straight up
   vec4 horizon;       // rgb, at the horizon (both halves)

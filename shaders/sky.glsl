@@ -1,4 +1,4 @@
-// The procedural sky (mirrored by skyRadiance in src/core/environment.cpp):
+// The procedural sky (mirrored by skyRadiance in src/core/scene/environment.cpp):
 // a gradient, sqrt-shaped in the elevation y, from the horizon to the zenith
 // above and to the ground below, plus the sun's disc, whose outer half of
 // radius fades out (smoothstep in the cosine).

@@ -1,7 +1,7 @@
 // Texture mapping for the textured forward variants: set 1 (one per
 // material), texture coordinates, lighting split for the diffuse texel.
 // UVs follow the course convention (origin at the bottom left, v up, see
-// core/mesh.h); images are stored top row first, so t = 1 - v.
+// core/scene/mesh.h); images are stored top row first, so t = 1 - v.
 #ifndef TEXTURING_GLSL
 #define TEXTURING_GLSL
 #include "lighting.glsl"

@@ -5,9 +5,9 @@
 #include <functional>
 #include <memory>
 
-#include "core/environment.h"
-#include "core/image.h"
-#include "core/scene.h"
+#include "core/scene/environment.h"
+#include "core/base/image.h"
+#include "core/scene/scene.h"
 
 namespace shadelab::test {
 

@@ -5,13 +5,13 @@
 
 #include <algorithm>
 
-#include "core/chart.h"
-#include "core/depth.h"
-#include "core/error_metric.h"
-#include "core/errors.h"
-#include "core/pareto.h"
-#include "passes/benchmark.h"
-#include "passes/quality.h"
+#include "core/metrics/chart.h"
+#include "core/vulkan/depth.h"
+#include "core/metrics/error_metric.h"
+#include "core/base/errors.h"
+#include "core/metrics/pareto.h"
+#include "measure/benchmark.h"
+#include "measure/quality.h"
 
 namespace shadelab {
 namespace {

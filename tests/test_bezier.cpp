@@ -1,4 +1,4 @@
-#include "core/bezier.h"
+#include "core/scene/bezier.h"
 
 #include <gtest/gtest.h>
 

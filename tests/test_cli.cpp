@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image.h"
+#include "core/base/image.h"
 #include "run_command.h"
 
 namespace {

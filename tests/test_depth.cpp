@@ -4,9 +4,9 @@
 // far off it was (figures below measured at 320x180 on lavapipe).
 #include <cstdio>
 
-#include "core/depth.h"
+#include "core/vulkan/depth.h"
 #include "gpu_test_support.h"
-#include "passes/zfight.h"
+#include "measure/zfight.h"
 
 namespace shadelab::test {
 namespace {

@@ -5,9 +5,9 @@
 // parallax only).
 #include <cstdio>
 
-#include "core/metrics.h"
-#include "core/raytracer.h"
-#include "core/reflection_regions.h"
+#include "core/metrics/metrics.h"
+#include "core/trace/raytracer.h"
+#include "core/trace/reflection_regions.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "core/environment.h"
+#include "core/scene/environment.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
 #include "passes/environment_builder.h"

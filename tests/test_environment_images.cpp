@@ -5,11 +5,11 @@
 // background-only render; goldens with must-fail twins.
 #include <cmath>
 
-#include "core/depth.h"
-#include "core/optics.h"
-#include "core/scene_loader.h"
-#include "core/texture.h"
-#include "core/transform.h"
+#include "core/vulkan/depth.h"
+#include "core/trace/optics.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/texture.h"
+#include "core/scene/transform.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
 

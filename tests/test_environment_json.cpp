@@ -8,9 +8,9 @@
 #include <fstream>
 #include <string>
 
-#include "core/errors.h"
-#include "core/image.h"
-#include "core/scene_json.h"
+#include "core/base/errors.h"
+#include "core/base/image.h"
+#include "core/scene/scene_json.h"
 
 namespace shadelab {
 namespace {

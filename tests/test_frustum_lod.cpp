@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "core/frustum.h"
-#include "core/lod.h"
-#include "core/scene.h"
-#include "core/transform.h"
+#include "core/scene/frustum.h"
+#include "core/scene/lod.h"
+#include "core/scene/scene.h"
+#include "core/scene/transform.h"
 
 namespace shadelab {
 namespace {

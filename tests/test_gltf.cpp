@@ -7,12 +7,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/errors.h"
-#include "core/frustum.h"
-#include "core/gltf_loader.h"
-#include "core/scene_json.h"
-#include "core/scene_loader.h"
-#include "core/transform.h"
+#include "core/base/errors.h"
+#include "core/scene/frustum.h"
+#include "core/scene/gltf_loader.h"
+#include "core/scene/scene_json.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/transform.h"
 #include "shared_assets.h"
 
 namespace shadelab {

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <fstream>
 
-#include "core/lod.h"
-#include "core/scene_loader.h"
-#include "core/transform.h"
+#include "core/scene/lod.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/transform.h"
 #include "gpu_test_support.h"
 #include "shared_assets.h"
 

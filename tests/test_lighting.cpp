@@ -4,7 +4,7 @@
 #include <initializer_list>
 #include <limits>
 
-#include "core/lighting.h"
+#include "core/scene/lighting.h"
 
 namespace shadelab {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/mesh.h"
+#include "core/scene/mesh.h"
 
 #include <gtest/gtest.h>
 

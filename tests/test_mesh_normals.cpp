@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/mesh.h"
+#include "core/scene/mesh.h"
 
 namespace shadelab {
 namespace {

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "core/metrics.h"
-#include "core/stats.h"
+#include "core/metrics/metrics.h"
+#include "core/base/stats.h"
 
 namespace shadelab {
 namespace {

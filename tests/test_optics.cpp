@@ -1,12 +1,12 @@
-// Reflection, refraction and Fresnel (core/optics.h) against the formulas
+// Reflection, refraction and Fresnel (core/trace/optics.h) against the formulas
 // and angles they come from, and the environment's addressing conventions
-// (core/environment.h): Vulkan's cube face table, the panorama mapping, the sky.
+// (core/scene/environment.h): Vulkan's cube face table, the panorama mapping, the sky.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/environment.h"
-#include "core/optics.h"
+#include "core/scene/environment.h"
+#include "core/trace/optics.h"
 
 namespace shadelab {
 namespace {

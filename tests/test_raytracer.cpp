@@ -8,14 +8,14 @@
 #include <limits>
 #include <random>
 
-#include "core/bvh.h"
-#include "core/errors.h"
-#include "core/gpu_scene.h"
-#include "core/lighting.h"
-#include "core/ray.h"
-#include "core/raytracer.h"
-#include "core/trace_shapes.h"
-#include "core/transform.h"
+#include "core/trace/bvh.h"
+#include "core/base/errors.h"
+#include "core/vulkan/gpu_scene.h"
+#include "core/scene/lighting.h"
+#include "core/trace/ray.h"
+#include "core/trace/raytracer.h"
+#include "core/trace/trace_shapes.h"
+#include "core/scene/transform.h"
 
 namespace shadelab {
 namespace {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/errors.h"
-#include "core/scene.h"
-#include "core/transform.h"
+#include "core/base/errors.h"
+#include "core/scene/scene.h"
+#include "core/scene/transform.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "core/errors.h"
-#include "core/scene_json.h"
-#include "core/scene_loader.h"
-#include "core/transform.h"
+#include "core/base/errors.h"
+#include "core/scene/scene_json.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/transform.h"
 
 namespace shadelab {
 namespace {

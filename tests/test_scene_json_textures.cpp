@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/errors.h"
-#include "core/procedural_textures.h"
-#include "core/scene_json.h"
+#include "core/base/errors.h"
+#include "core/scene/procedural_textures.h"
+#include "core/scene/scene_json.h"
 
 namespace shadelab {
 namespace {

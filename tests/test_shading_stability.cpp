@@ -1,17 +1,17 @@
 // Where each shading method fails, measured on the device readback (linear
 // float, before sRGB encoding) and checked against the C++ illumination
-// equation in core/lighting.h. Every test asserts a measured quantity; the
+// equation in core/scene/lighting.h. Every test asserts a measured quantity; the
 // figures are printed so a failing run shows how far off it was.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
 
-#include "core/lighting.h"
-#include "core/gpu_scene.h"
-#include "core/scene.h"
-#include "core/shading.h"
-#include "core/transform.h"
+#include "core/scene/lighting.h"
+#include "core/vulkan/gpu_scene.h"
+#include "core/scene/scene.h"
+#include "core/scene/shading.h"
+#include "core/scene/transform.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/image.h"
-#include "core/procedural_textures.h"
-#include "core/texture.h"
+#include "core/base/image.h"
+#include "core/scene/procedural_textures.h"
+#include "core/scene/texture.h"
 #include "gpu_test_support.h"
 #include "passes/forward_pass.h"
 #include "passes/scene_textures.h"
@@ -124,7 +124,7 @@ TEST_F(TextureUpload, SamplersAreCreatedOncePerDescription) {
   EXPECT_EQ(textures.samplerCount(), 2u);
 }
 
-// The UV convention (core/mesh.h): origin at the bottom left, v up, so an
+// The UV convention (core/scene/mesh.h): origin at the bottom left, v up, so an
 // image's top row shows at the top of a plane facing the camera, unflipped.
 Scene quadrantScene() {
   Scene scene;

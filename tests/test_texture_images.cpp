@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/procedural_textures.h"
-#include "core/scene.h"
-#include "core/transform.h"
+#include "core/scene/procedural_textures.h"
+#include "core/scene/scene.h"
+#include "core/scene/transform.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {

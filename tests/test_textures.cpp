@@ -8,12 +8,12 @@
 #include <filesystem>
 #include <numbers>
 
-#include "core/errors.h"
-#include "core/image.h"
-#include "core/procedural_textures.h"
-#include "core/texture.h"
-#include "core/trace_textures.h"
-#include "core/uv_mapping.h"
+#include "core/base/errors.h"
+#include "core/base/image.h"
+#include "core/scene/procedural_textures.h"
+#include "core/scene/texture.h"
+#include "core/trace/trace_textures.h"
+#include "core/scene/uv_mapping.h"
 
 namespace shadelab {
 namespace {

@@ -3,9 +3,9 @@
 // compute the same thing (a smooth sphere, Phong, no shadows to differ).
 #include <cstdio>
 
-#include "core/metrics.h"
-#include "core/raytracer.h"
-#include "core/scene.h"
+#include "core/metrics/metrics.h"
+#include "core/trace/raytracer.h"
+#include "core/scene/scene.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {

@@ -9,8 +9,8 @@
 #include <cstring>
 #include <limits>
 
-#include "core/raytracer.h"
-#include "core/transform.h"
+#include "core/trace/raytracer.h"
+#include "core/scene/transform.h"
 
 namespace shadelab {
 namespace {

@@ -8,13 +8,13 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/image.h"
-#include "core/metrics.h"
-#include "core/procedural_textures.h"
-#include "core/raytracer.h"
-#include "core/scene_loader.h"
-#include "core/texture.h"
-#include "core/transform.h"
+#include "core/base/image.h"
+#include "core/metrics/metrics.h"
+#include "core/scene/procedural_textures.h"
+#include "core/trace/raytracer.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/texture.h"
+#include "core/scene/transform.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
 

@@ -2,7 +2,7 @@
 
 #define GLM_ENABLE_EXPERIMENTAL  // the glm/gtx headers (shear, to_string) are "experimental"
 
-#include "core/transform.h"
+#include "core/scene/transform.h"
 
 #include <gtest/gtest.h>
 

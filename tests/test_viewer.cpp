@@ -11,9 +11,9 @@
 #include <regex>
 #include <string>
 
-#include "core/glsl_compiler.h"
-#include "core/lod.h"
-#include "core/scene.h"
+#include "view/glsl_compiler.h"
+#include "core/scene/lod.h"
+#include "core/scene/scene.h"
 #include "gpu_test_support.h"
 #include "run_command.h"
 #include "view/camera_controller.h"

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <glm/gtc/constants.hpp>
 
-#include "core/errors.h"
-#include "core/glsl_compiler.h"
-#include "core/shader.h"
+#include "core/base/errors.h"
+#include "view/glsl_compiler.h"
+#include "core/vulkan/shader.h"
 #include "passes/renderer.h"
 #include "view/camera_controller.h"
 #include "view/viewer_script.h"

@@ -5,7 +5,7 @@
 #include <regex>
 #include <sstream>
 
-#include "core/errors.h"
+#include "core/base/errors.h"
 
 namespace shadelab {
 

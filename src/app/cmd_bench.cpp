@@ -14,13 +14,13 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/errors.h"
-#include "core/files.h"
-#include "core/scene_loader.h"
-#include "core/texture.h"
-#include "passes/bench_charts.h"
-#include "passes/benchmark.h"
-#include "passes/zfight.h"
+#include "core/base/errors.h"
+#include "core/base/files.h"
+#include "core/scene/scene_loader.h"
+#include "core/scene/texture.h"
+#include "measure/bench_charts.h"
+#include "measure/benchmark.h"
+#include "measure/zfight.h"
 
 namespace shadelab {
 namespace {

@@ -10,14 +10,14 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/errors.h"
-#include "core/files.h"
-#include "core/metrics.h"
-#include "core/raytracer.h"
-#include "core/reflection_regions.h"
-#include "core/scene_loader.h"
-#include "core/sheet.h"
-#include "passes/reference.h"
+#include "core/base/errors.h"
+#include "core/base/files.h"
+#include "core/metrics/metrics.h"
+#include "core/trace/raytracer.h"
+#include "core/trace/reflection_regions.h"
+#include "core/scene/scene_loader.h"
+#include "core/metrics/sheet.h"
+#include "measure/reference.h"
 #include "passes/renderer.h"
 
 namespace shadelab {
@@ -62,7 +62,7 @@ std::string fixed(double value, int digits) {
   return out.str();
 }
 
-// Environment mapping against traced reflection (core/reflection_regions.h):
+// Environment mapping against traced reflection (core/trace/reflection_regions.h):
 // the regions as a sheet cell (their sizes also into the report) and each
 // mode's FLIP split by them.
 SheetCell regionCell(const ReflectionRegions& regions, nlohmann::json& report) {

@@ -2,9 +2,9 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/depth.h"
-#include "core/scene.h"
-#include "core/shading.h"
+#include "core/vulkan/depth.h"
+#include "core/scene/scene.h"
+#include "core/scene/shading.h"
 
 namespace shadelab {
 namespace {

@@ -8,13 +8,13 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/errors.h"
-#include "core/image.h"
-#include "core/lod.h"
-#include "core/scene_loader.h"
-#include "core/stats.h"
-#include "core/texture.h"
-#include "passes/quality.h"
+#include "core/base/errors.h"
+#include "core/base/image.h"
+#include "core/scene/lod.h"
+#include "core/scene/scene_loader.h"
+#include "core/base/stats.h"
+#include "core/scene/texture.h"
+#include "measure/quality.h"
 #include "passes/renderer.h"
 
 namespace shadelab {

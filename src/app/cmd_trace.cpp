@@ -7,9 +7,9 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/image.h"
-#include "core/raytracer.h"
-#include "core/scene_loader.h"
+#include "core/base/image.h"
+#include "core/trace/raytracer.h"
+#include "core/scene/scene_loader.h"
 
 namespace shadelab {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/scene_loader.h"
+#include "core/scene/scene_loader.h"
 #include "view/viewer.h"
 
 #ifndef SHADELAB_SHADER_SOURCE_DIR

@@ -6,7 +6,7 @@
 #include <map>
 
 #include "app/commands.h"
-#include "core/errors.h"
+#include "core/base/errors.h"
 
 #ifndef SHADELAB_VALIDATION_DEFAULT
 #define SHADELAB_VALIDATION_DEFAULT 0

@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include "core/shader.h"
-#include "core/vk_check.h"
+#include "core/vulkan/shader.h"
+#include "core/vulkan/vk_check.h"
 
 namespace shadelab {
 

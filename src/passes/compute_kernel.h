@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/context.h"
-#include "core/resources.h"
+#include "core/vulkan/context.h"
+#include "core/vulkan/resources.h"
 
 namespace shadelab {
 

@@ -6,9 +6,9 @@
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 
-#include "core/barriers.h"
-#include "core/texture.h"
-#include "core/vk_check.h"
+#include "core/vulkan/barriers.h"
+#include "core/scene/texture.h"
+#include "core/vulkan/vk_check.h"
 
 namespace shadelab {
 namespace {

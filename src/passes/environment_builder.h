@@ -7,11 +7,11 @@
 // uploaded as they are. Load time only: build() submits and waits.
 #include <array>
 
-#include "core/barriers.h"
-#include "core/context.h"
-#include "core/environment.h"
-#include "core/image.h"
-#include "core/resources.h"
+#include "core/vulkan/barriers.h"
+#include "core/vulkan/context.h"
+#include "core/scene/environment.h"
+#include "core/base/image.h"
+#include "core/vulkan/resources.h"
 #include "passes/equirect_cube_pass.h"
 #include "passes/mip_generation.h"
 #include "passes/sky_cube_pass.h"

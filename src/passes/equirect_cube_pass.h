@@ -5,7 +5,7 @@
 // Reads: `panorama` (a mip-mapped 2D texture in ComputeRead use, sampled
 // with u repeating). Writes: `target`, a 2D-array view of the cube's level 0,
 // in ComputeWrite use.
-#include "core/context.h"
+#include "core/vulkan/context.h"
 #include "interface.h"
 #include "passes/compute_kernel.h"
 

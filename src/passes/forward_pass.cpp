@@ -5,9 +5,9 @@
 #include <optional>
 #include <vector>
 
-#include "core/mesh.h"
-#include "core/shader.h"
-#include "core/vk_check.h"
+#include "core/scene/mesh.h"
+#include "core/vulkan/shader.h"
+#include "core/vulkan/vk_check.h"
 #include "passes/graphics_pipeline.h"
 
 namespace shadelab {

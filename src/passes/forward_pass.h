@@ -14,11 +14,11 @@
 #include <tuple>
 #include <vector>
 
-#include "core/context.h"
-#include "core/depth.h"
-#include "core/gpu_scene.h"
-#include "core/resources.h"
-#include "core/shading.h"
+#include "core/vulkan/context.h"
+#include "core/vulkan/depth.h"
+#include "core/vulkan/gpu_scene.h"
+#include "core/vulkan/resources.h"
+#include "core/scene/shading.h"
 
 namespace shadelab {
 

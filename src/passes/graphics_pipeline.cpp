@@ -1,6 +1,6 @@
 #include "passes/graphics_pipeline.h"
 
-#include "core/vk_check.h"
+#include "core/vulkan/vk_check.h"
 
 namespace shadelab {
 

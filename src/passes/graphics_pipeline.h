@@ -7,7 +7,7 @@
 
 #include <span>
 
-#include "core/resources.h"
+#include "core/vulkan/resources.h"
 
 namespace shadelab {
 

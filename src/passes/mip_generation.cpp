@@ -3,9 +3,9 @@
 #include <cassert>
 #include <string>
 
-#include "core/barriers.h"
-#include "core/errors.h"
-#include "core/texture.h"
+#include "core/vulkan/barriers.h"
+#include "core/base/errors.h"
+#include "core/scene/texture.h"
 
 namespace shadelab {
 

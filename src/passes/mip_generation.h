@@ -7,7 +7,7 @@
 // continuous image and the sampler's seamless cube filtering joins them.
 // Reads: level 0, in TransferDest layout (just copied in).
 // Writes: every level, left in ShaderRead layout.
-#include "core/context.h"
+#include "core/vulkan/context.h"
 
 namespace shadelab {
 

@@ -7,9 +7,9 @@
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 
-#include "core/barriers.h"
-#include "core/errors.h"
-#include "core/vk_check.h"
+#include "core/vulkan/barriers.h"
+#include "core/base/errors.h"
+#include "core/vulkan/vk_check.h"
 
 namespace shadelab {
 namespace {

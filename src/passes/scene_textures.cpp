@@ -5,10 +5,10 @@
 #include <cstring>
 #include <tuple>
 
-#include "core/barriers.h"
-#include "core/errors.h"
-#include "core/texture.h"
-#include "core/vk_check.h"
+#include "core/vulkan/barriers.h"
+#include "core/base/errors.h"
+#include "core/scene/texture.h"
+#include "core/vulkan/vk_check.h"
 #include "interface.h"
 
 namespace shadelab {

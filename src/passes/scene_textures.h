@@ -8,10 +8,10 @@
 #include <optional>
 #include <vector>
 
-#include "core/context.h"
-#include "core/gpu_scene.h"
-#include "core/resources.h"
-#include "core/scene.h"
+#include "core/vulkan/context.h"
+#include "core/vulkan/gpu_scene.h"
+#include "core/vulkan/resources.h"
+#include "core/scene/scene.h"
 #include "passes/mip_generation.h"
 
 namespace shadelab {

@@ -3,7 +3,7 @@
 // shaders/sky.glsl), one compute invocation per texel of each face.
 // Reads: the sky parameters (push constants).
 // Writes: `target`, a 2D-array view of the cube's level 0, in ComputeWrite use.
-#include "core/context.h"
+#include "core/vulkan/context.h"
 #include "interface.h"
 #include "passes/compute_kernel.h"
 

@@ -2,9 +2,9 @@
 
 #include <cassert>
 
-#include "core/depth.h"
-#include "core/shader.h"
-#include "core/vk_check.h"
+#include "core/vulkan/depth.h"
+#include "core/vulkan/shader.h"
+#include "core/vulkan/vk_check.h"
 #include "interface.h"
 #include "passes/graphics_pipeline.h"
 

@@ -7,8 +7,8 @@
 #include <glm/glm.hpp>
 #include <map>
 
-#include "core/context.h"
-#include "core/resources.h"
+#include "core/vulkan/context.h"
+#include "core/vulkan/resources.h"
 #include "passes/forward_pass.h"
 
 namespace shadelab {

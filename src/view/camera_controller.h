@@ -4,7 +4,7 @@
 // camera exactly, so an unmoved viewer matches a headless render.
 #include <glm/glm.hpp>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace shadelab {
 

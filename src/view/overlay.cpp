@@ -3,8 +3,8 @@
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
 
-#include "core/image.h"
-#include "core/vk_check.h"
+#include "core/base/image.h"
+#include "core/vulkan/vk_check.h"
 
 namespace shadelab {
 namespace {

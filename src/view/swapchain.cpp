@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "core/errors.h"
-#include "core/vk_check.h"
+#include "core/base/errors.h"
+#include "core/vulkan/vk_check.h"
 
 namespace shadelab {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "core/context.h"
-#include "core/resources.h"
+#include "core/vulkan/context.h"
+#include "core/vulkan/resources.h"
 
 namespace shadelab {
 

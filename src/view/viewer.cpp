@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <fstream>
 
-#include "core/image.h"
-#include "core/stats.h"
-#include "core/vk_check.h"
-#include "passes/present_pass.h"
+#include "core/base/image.h"
+#include "core/base/stats.h"
+#include "core/vulkan/vk_check.h"
+#include "view/present_pass.h"
 
 namespace shadelab {
 namespace {

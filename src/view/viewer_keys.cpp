@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/glsl_compiler.h"
-#include "core/lod.h"
-#include "core/stats.h"
-#include "core/texture.h"
+#include "view/glsl_compiler.h"
+#include "core/scene/lod.h"
+#include "core/base/stats.h"
+#include "core/scene/texture.h"
 #include "view/viewer.h"
 
 #define GLFW_INCLUDE_NONE

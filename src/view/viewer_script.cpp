@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/errors.h"
-#include "core/image.h"
+#include "core/base/errors.h"
+#include "core/base/image.h"
 
 namespace shadelab {
 namespace {

@@ -3,8 +3,8 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
-#include "core/errors.h"
-#include "core/vk_check.h"
+#include "core/base/errors.h"
+#include "core/vulkan/vk_check.h"
 
 namespace shadelab {
 namespace {

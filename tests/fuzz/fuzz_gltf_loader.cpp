@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <span>
 
-#include "core/errors.h"
-#include "core/gltf_loader.h"
+#include "core/base/errors.h"
+#include "core/scene/gltf_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

@@ -1,0 +1,138 @@
+#include "core/base/image.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+#include <algorithm>
+#include <cmath>
+#include <system_error>
+
+#include "core/base/errors.h"
+#include "core/base/files.h"
+
+namespace shadelab {
+namespace fs = std::filesystem;
+
+glm::vec4 ImageRgba::at(uint32_t x, uint32_t y) const {
+  const float* p = &pixels[(size_t(y) * width + x) * 4];
+  return {p[0], p[1], p[2], p[3]};
+}
+
+void ImageRgba::set(uint32_t x, uint32_t y, glm::vec4 value) {
+  float* p = &pixels[(size_t(y) * width + x) * 4];
+  p[0] = value.r, p[1] = value.g, p[2] = value.b, p[3] = value.a;
+}
+
+glm::u8vec4 ImageU8::at(uint32_t x, uint32_t y) const {
+  const uint8_t* p = &pixels[(size_t(y) * width + x) * 4];
+  return {p[0], p[1], p[2], p[3]};
+}
+
+void ImageU8::set(uint32_t x, uint32_t y, glm::u8vec4 value) {
+  uint8_t* p = &pixels[(size_t(y) * width + x) * 4];
+  p[0] = value.r, p[1] = value.g, p[2] = value.b, p[3] = value.a;
+}
+
+float linearToSrgb(float linear) {
+  if (!(linear > 0.0f)) return 0.0f;  // also maps NaN to 0
+  if (linear >= 1.0f) return 1.0f;
+  return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgbToLinear(float encoded) {
+  return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+ImageU8 encodeSrgb8(const ImageRgba& image) {
+  ImageU8 result(image.width, image.height);
+  auto quantize = [](float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+  for (size_t i = 0; i < result.pixels.size(); ++i) {
+    bool alpha = i % 4 == 3;
+    result.pixels[i] = quantize(alpha ? image.pixels[i] : linearToSrgb(image.pixels[i]));
+  }
+  return result;
+}
+
+ImageRgba decodeSrgb8(const ImageU8& image) {
+  ImageRgba result(image.width, image.height);
+  for (size_t i = 0; i < result.pixels.size(); ++i) {
+    float v = image.pixels[i] / 255.0f;
+    result.pixels[i] = i % 4 == 3 ? v : srgbToLinear(v);
+  }
+  return result;
+}
+
+bool isSupportedOutput(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  return ext == ".png" || ext == ".exr";
+}
+
+void checkOutputPath(const fs::path& path) {
+  if (path.empty()) throw InputError("output path is empty");
+  if (!isSupportedOutput(path))
+    throw InputError("output '" + path.string() + "': unsupported extension '" +
+                     path.extension().string() + "' (expected .png or .exr)");
+  checkWritableFolder(path);
+}
+
+namespace {
+
+void writeAtomically(const OIIO::ImageBuf& buffer, const fs::path& path) {
+  checkOutputPath(path);
+  fs::path temporary = temporaryBeside(path);
+  if (!buffer.write(temporary.string())) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw InputError("cannot write '" + path.string() + "': " + buffer.geterror());
+  }
+  replaceWith(temporary, path);
+}
+
+}  // namespace
+
+void writeImage(const ImageU8& image, const fs::path& path) {
+  OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  OIIO::ImageBuf buffer(spec, const_cast<uint8_t*>(image.pixels.data()));
+  writeAtomically(buffer, path);
+}
+
+void writeImage(const ImageRgba& image, const fs::path& path) {
+  checkOutputPath(path);
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (ext != ".exr") return writeImage(encodeSrgb8(image), path);
+  OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT);
+  spec.attribute("oiio:ColorSpace", "Linear");
+  spec.set_format(OIIO::TypeDesc::HALF);  // stored as half, like the render target
+  OIIO::ImageBuf buffer(spec);
+  buffer.set_pixels(OIIO::ROI(0, int(image.width), 0, int(image.height), 0, 1, 0, 4),
+                    OIIO::TypeDesc::FLOAT, image.pixels.data());
+  writeAtomically(buffer, path);
+}
+
+ImageU8 readImageU8(const fs::path& path) {
+  if (!fs::exists(path)) throw InputError("image '" + path.string() + "' does not exist");
+  OIIO::ImageBuf source(path.string());
+  if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
+    throw InputError("cannot read image '" + path.string() + "': " + source.geterror());
+  const OIIO::ImageSpec& spec = source.spec();
+  ImageU8 image(uint32_t(spec.width), uint32_t(spec.height));
+  // Missing channels: grey replicates, alpha defaults to opaque.
+  int channels = spec.nchannels;
+  std::vector<uint8_t> raw(size_t(spec.width) * spec.height * channels);
+  source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
+                    OIIO::TypeDesc::UINT8, raw.data());
+  for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p) {
+    const uint8_t* in = &raw[p * channels];
+    uint8_t* out = &image.pixels[p * 4];
+    out[0] = in[0];
+    out[1] = channels >= 3 ? in[1] : in[0];
+    out[2] = channels >= 3 ? in[2] : in[0];
+    out[3] = channels == 4 ? in[3] : (channels == 2 ? in[1] : 255);
+  }
+  return image;
+}
+
+}  // namespace shadelab

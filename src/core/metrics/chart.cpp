@@ -1,0 +1,288 @@
+#include "core/metrics/chart.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace shadelab {
+namespace {
+
+namespace IBA = OIIO::ImageBufAlgo;
+constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+constexpr int kMarginLeft = 86, kMarginRight = 170, kMarginTop = 52, kMarginBottom = 62;
+constexpr int kTitleSize = 18, kAxisLabelSize = 15, kTickSize = 13, kPointLabelSize = 12;
+const float kInk[4] = {0.1f, 0.1f, 0.12f, 1.0f};
+const float kGrid[4] = {0.88f, 0.88f, 0.9f, 1.0f};
+const float kPaper[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+
+struct Rect {
+  int x0, y0, x1, y1;
+  bool overlaps(const Rect& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+void drawText(OIIO::ImageBuf& image, int x, int y, const std::string& text, int size,
+              const float* color, IBA::TextAlignX alignX = IBA::TextAlignX::Left,
+              IBA::TextAlignY alignY = IBA::TextAlignY::Baseline) {
+  if (text.empty()) return;
+  if (!IBA::render_text(image, x, y, text, size, kFont, {color, 4}, alignX, alignY))
+    throw std::runtime_error("cannot draw chart text with " + std::string(kFont) + ": " +
+                             image.geterror() + " (install Debian package fonts-dejavu-core)");
+}
+
+Rect textRect(const std::string& text, int size, int x, int baseline) {
+  OIIO::ROI box = IBA::text_size(text, size, kFont);
+  return {x + box.xbegin, baseline + box.ybegin, x + box.xend, baseline + box.yend};
+}
+
+std::string tickText(double value) {
+  char text[32];
+  if (value != 0.0 && (std::abs(value) >= 1e7 || std::abs(value) < 1e-3))
+    std::snprintf(text, sizeof text, "%.0e", value);
+  else
+    std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// Maps data values to pixels along one axis.
+struct Mapping {
+  double low, high;
+  AxisScale scale;
+  int from, to;  // pixel positions of low and high
+  double unit(double value) const {
+    if (scale == AxisScale::Log) return std::log10(value);
+    return value;
+  }
+  double operator()(double value) const {
+    double t = (unit(value) - unit(low)) / (unit(high) - unit(low));
+    return from + t * (to - from);
+  }
+};
+
+// The axis range: the data's, widened to whole ticks.
+std::pair<double, double> axisRange(const ChartAxis& axis, double low, double high) {
+  if (axis.scale == AxisScale::Log) {
+    low = std::max(low, 1e-12);
+    high = std::max(high, low);
+    // The nearest 1, 2 or 5 times a power of ten outside the data, or within
+    // 1% inside it (the marks may overhang the frame a little).
+    double lowPower = std::pow(10.0, std::floor(std::log10(low)));
+    double lowTick = lowPower;
+    for (double step : {2.0, 5.0})
+      if (step * lowPower <= low * 1.01) lowTick = step * lowPower;
+    double highPower = std::pow(10.0, std::floor(std::log10(high)));
+    double highTick = 10.0 * highPower;
+    for (double step : {5.0, 2.0, 1.0})
+      if (step * highPower >= high * 0.99) highTick = step * highPower;
+    if (highTick <= lowTick) highTick = lowTick * 10.0;
+    return {axis.min.value_or(lowTick), axis.max.value_or(highTick)};
+  }
+  if (low > 0.0 && low < 0.5 * high) low = 0.0;  // start from zero when that costs little room
+  if (high <= low) high = low + 1.0;
+  std::vector<double> ticks = axisTicks(low, high, AxisScale::Linear);
+  return {axis.min.value_or(std::min(low, ticks.front())),
+          axis.max.value_or(std::max(high, ticks.back()))};
+}
+
+// Marks and lines are clipped to `clip` (the plot area, or the whole image).
+void fillDisc(OIIO::ImageBuf& image, double cx, double cy, double radius, const float* color,
+              double inner, const OIIO::ROI& clip) {
+  for (int y = int(std::floor(cy - radius)); y <= int(std::ceil(cy + radius)); ++y)
+    for (int x = int(std::floor(cx - radius)); x <= int(std::ceil(cx + radius)); ++x) {
+      double d = std::hypot(x - cx, y - cy);
+      if (d <= radius && d >= inner && clip.contains(x, y)) image.setpixel(x, y, color, 4);
+    }
+}
+
+void drawThickLine(OIIO::ImageBuf& image, double x0, double y0, double x1, double y1,
+                   const float* color, const OIIO::ROI& clip) {
+  for (int offset = 0; offset < 2; ++offset) {
+    IBA::render_line(image, int(std::lround(x0)), int(std::lround(y0)) + offset,
+                     int(std::lround(x1)), int(std::lround(y1)) + offset, {color, 4}, false, clip);
+  }
+}
+
+void drawMarker(OIIO::ImageBuf& image, Marker marker, double x, double y, double size,
+                const float* color, const OIIO::ROI& clip) {
+  if (marker == Marker::Dot) fillDisc(image, x, y, size, color, -1.0, clip);
+  if (marker == Marker::Ring) fillDisc(image, x, y, size + 4.0, color, size + 2.0, clip);
+}
+
+void drawVerticalText(OIIO::ImageBuf& image, int centerX, int centerY, const std::string& text) {
+  OIIO::ROI box = IBA::text_size(text, kAxisLabelSize, kFont);
+  int width = box.width() + 4, height = box.height() + 4;
+  OIIO::ImageBuf label(OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::FLOAT));
+  IBA::fill(label, {kPaper, 4});
+  drawText(label, 2 - box.xbegin, 2 - box.ybegin, text, kAxisLabelSize, kInk);
+  OIIO::ImageBuf turned = IBA::rotate270(label);  // reads bottom to top
+  IBA::paste(image, centerX - height / 2, centerY - width / 2, 0, 0, turned);
+}
+
+void drawAxes(OIIO::ImageBuf& image, const Chart& chart, const Mapping& mx, const Mapping& my,
+              int plotLeft, int plotTop, int plotRight, int plotBottom) {
+  // A tick can fall just outside the plot when the range was widened with
+  // another tick step; OpenImageIO aborts on text placed off the image.
+  for (double tick : axisTicks(mx.low, mx.high, chart.x.scale)) {
+    int x = int(std::lround(mx(tick)));
+    if (x < plotLeft || x > plotRight) continue;
+    IBA::render_line(image, x, plotTop, x, plotBottom, {kGrid, 4});
+    IBA::render_line(image, x, plotBottom, x, plotBottom + 5, {kInk, 4});
+    drawText(image, x, plotBottom + 20, tickText(tick), kTickSize, kInk, IBA::TextAlignX::Center);
+  }
+  for (double tick : axisTicks(my.low, my.high, chart.y.scale)) {
+    int y = int(std::lround(my(tick)));
+    if (y < plotTop || y > plotBottom) continue;
+    IBA::render_line(image, plotLeft, y, plotRight, y, {kGrid, 4});
+    IBA::render_line(image, plotLeft - 5, y, plotLeft, y, {kInk, 4});
+    drawText(image, plotLeft - 8, y, tickText(tick), kTickSize, kInk, IBA::TextAlignX::Right,
+             IBA::TextAlignY::Center);
+  }
+  IBA::render_box(image, plotLeft, plotTop, plotRight, plotBottom, {kInk, 4});
+  drawText(image, (plotLeft + plotRight) / 2, plotBottom + 46, chart.x.label, kAxisLabelSize, kInk,
+           IBA::TextAlignX::Center);
+  drawVerticalText(image, plotLeft - kMarginLeft + 16, (plotTop + plotBottom) / 2, chart.y.label);
+  drawText(image, plotLeft, 22, chart.title, kTitleSize, kInk);
+  drawText(image, plotLeft, 38, chart.subtitle, kTickSize, kInk);
+}
+
+void drawLegend(OIIO::ImageBuf& image, const Chart& chart, int left, int top) {
+  int y = top + 8;
+  OIIO::ROI all = image.roi();
+  for (size_t i = 0; i < chart.series.size(); ++i) {
+    const ChartSeries& series = chart.series[i];
+    if (series.name.empty()) continue;
+    float color[4] = {series.color.r, series.color.g, series.color.b, 1.0f};
+    if (series.connect) drawThickLine(image, left, y, left + 22, y, color, all);
+    drawMarker(image, series.marker, left + 11, y, series.markerSize, color, all);
+    drawText(image, left + 30, y, series.name, kTickSize, kInk, IBA::TextAlignX::Left,
+             IBA::TextAlignY::Center);
+    y += 20;
+  }
+}
+
+void drawChartInto(OIIO::ImageBuf& image, const Chart& chart, int originX, int width, int height) {
+  int plotLeft = originX + kMarginLeft, plotRight = originX + width - kMarginRight;
+  int plotTop = kMarginTop, plotBottom = height - kMarginBottom;
+  double minX = std::numeric_limits<double>::infinity(), maxX = -minX;
+  double minY = minX, maxY = -minX;
+  for (const ChartSeries& series : chart.series)
+    for (const ChartPoint& p : series.points) {
+      minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
+      minY = std::min(minY, p.y), maxY = std::max(maxY, p.y);
+    }
+  if (minX > maxX) minX = 0.0, maxX = 1.0, minY = 0.0, maxY = 1.0;  // no data: empty axes
+  auto [lowX, highX] = axisRange(chart.x, minX, maxX);
+  auto [lowY, highY] = axisRange(chart.y, minY, maxY);
+  Mapping mx{lowX, highX, chart.x.scale, plotLeft, plotRight};
+  Mapping my{lowY, highY, chart.y.scale, plotBottom, plotTop};
+  drawAxes(image, chart, mx, my, plotLeft, plotTop, plotRight, plotBottom);
+
+  // Marks may reach a little past the frame, so points on an axis stay visible.
+  OIIO::ROI clip(plotLeft - 8, plotRight + 9, plotTop - 8, plotBottom + 9, 0, 1, 0, 4);
+  for (size_t s = 0; s < chart.series.size(); ++s) {
+    const ChartSeries& series = chart.series[s];
+    float color[4] = {series.color.r, series.color.g, series.color.b, 1.0f};
+    for (size_t i = 0; series.connect && i + 1 < series.points.size(); ++i)
+      drawThickLine(image, mx(series.points[i].x), my(series.points[i].y),
+                    mx(series.points[i + 1].x), my(series.points[i + 1].y), color, clip);
+    for (const ChartPoint& p : series.points)
+      drawMarker(image, series.marker, mx(p.x), my(p.y), series.markerSize, color, clip);
+  }
+  // Labels go right, left, above or below their point, wherever they overlap
+  // nothing placed before; a label with no free spot is left out.
+  std::vector<Rect> taken;
+  for (const ChartSeries& series : chart.series)
+    for (const ChartPoint& p : series.points) {
+      int x = int(std::lround(mx(p.x))), y = int(std::lround(my(p.y)));
+      int r = int(std::ceil(series.markerSize)) - 1;
+      if (series.marker == Marker::Dot) taken.push_back({x - r, y - r, x + r, y + r});
+    }
+  Rect bounds{plotLeft + 2, plotTop + 2, plotRight - 2, plotBottom - 2};
+  for (const ChartSeries& series : chart.series)
+    for (const ChartPoint& p : series.points) {
+      if (p.label.empty()) continue;
+      int x = int(std::lround(mx(p.x))), y = int(std::lround(my(p.y)));
+      Rect size = textRect(p.label, kPointLabelSize, 0, 0);
+      int w = size.x1 - size.x0, h = size.y1 - size.y0;
+      const std::pair<int, int> spots[] = {
+          {x + 9, y + h / 2}, {x - 9 - w, y + h / 2}, {x - w / 2, y - 9}, {x - w / 2, y + 9 + h}};
+      for (auto [left, baseline] : spots) {
+        Rect rect = textRect(p.label, kPointLabelSize, left, baseline);
+        rect = {rect.x0 - 1, rect.y0 - 1, rect.x1 + 1, rect.y1 + 1};
+        bool inside = rect.x0 >= bounds.x0 && rect.x1 <= bounds.x1 && rect.y0 >= bounds.y0 &&
+                      rect.y1 <= bounds.y1;
+        if (!inside || std::any_of(taken.begin(), taken.end(),
+                                   [&](const Rect& t) { return t.overlaps(rect); }))
+          continue;
+        drawText(image, left, baseline, p.label, kPointLabelSize, kInk);
+        taken.push_back(rect);
+        break;
+      }
+    }
+  drawLegend(image, chart, plotRight + 14, plotTop);
+}
+
+ImageU8 toImage(const OIIO::ImageBuf& image) {
+  const OIIO::ImageSpec& spec = image.spec();
+  ImageU8 result(uint32_t(spec.width), uint32_t(spec.height));
+  image.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 4), OIIO::TypeDesc::UINT8,
+                   result.pixels.data());
+  return result;
+}
+
+}  // namespace
+
+std::vector<double> axisTicks(double low, double high, AxisScale scale) {
+  std::vector<double> ticks;
+  if (!(high > low)) return {low};
+  if (scale == AxisScale::Log) {
+    int first = int(std::floor(std::log10(low) + 1e-9));
+    int last = int(std::ceil(std::log10(high) - 1e-9));
+    bool fine = last - first < 3;
+    for (int decade = first; decade <= last; ++decade)
+      for (double step : {1.0, 2.0, 5.0}) {
+        if (step != 1.0 && !fine) continue;
+        double tick = step * std::pow(10.0, decade);
+        if (tick >= low * (1 - 1e-9) && tick <= high * (1 + 1e-9)) ticks.push_back(tick);
+      }
+    return ticks;
+  }
+  // About five ticks at 1, 2 or 5 times a power of ten.
+  double raw = (high - low) / 5.0;
+  double power = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = power * (raw / power < 1.5   ? 1.0
+                         : raw / power < 3.5 ? 2.0
+                         : raw / power < 7.5 ? 5.0
+                                             : 10.0);
+  for (double tick = std::floor(low / step + 1e-9) * step; tick <= high + step * 0.999;
+       tick += step)
+    ticks.push_back(std::abs(tick) < step * 1e-9 ? 0.0 : tick);
+  return ticks;
+}
+
+glm::vec3 chartColor(size_t index) {
+  // Okabe-Ito, distinguishable with the common colour-vision deficiencies.
+  static const glm::vec3 palette[] = {
+      {0.0f, 0.45f, 0.70f}, {0.90f, 0.62f, 0.0f},  {0.0f, 0.62f, 0.45f},  {0.80f, 0.47f, 0.65f},
+      {0.84f, 0.37f, 0.0f}, {0.34f, 0.71f, 0.91f}, {0.60f, 0.60f, 0.60f}, {0.94f, 0.89f, 0.26f}};
+  return palette[index % std::size(palette)];
+}
+
+ImageU8 drawChart(const Chart& chart, uint32_t width, uint32_t height) {
+  return drawChartRow({chart}, width, height);
+}
+
+ImageU8 drawChartRow(const std::vector<Chart>& charts, uint32_t panelWidth, uint32_t height) {
+  int width = int(panelWidth * charts.size());
+  OIIO::ImageBuf image(OIIO::ImageSpec(width, int(height), 4, OIIO::TypeDesc::FLOAT));
+  IBA::fill(image, {kPaper, 4});
+  for (size_t i = 0; i < charts.size(); ++i)
+    drawChartInto(image, charts[i], int(i * panelWidth), int(panelWidth), int(height));
+  return toImage(image);
+}
+
+}  // namespace shadelab

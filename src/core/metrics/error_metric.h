@@ -1,0 +1,32 @@
+#pragma once
+// The error the benchmark and `render --quality` measure against a
+// reference, chosen by name so that a new metric is one table entry: RMSE,
+// PSNR (8-bit sRGB), SSIM and mean FLIP (core/metrics/metrics.h).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/base/image.h"
+
+namespace shadelab {
+
+struct ErrorMetric {
+  std::string name;         // "rmse"
+  std::string description;  // for chart axes and messages
+  bool lowerIsBetter = true;
+  std::function<double(const ImageU8& reference, const ImageU8& image)> measure;
+
+  // Whether `value` meets `bound`: at most the bound for an error, at least
+  // it for a quality score such as PSNR.
+  bool meets(double value, double bound) const {
+    return lowerIsBetter ? value <= bound : value >= bound;
+  }
+  // Ordered so that smaller is always better (for Pareto fronts).
+  double badness(double value) const { return lowerIsBetter ? value : -value; }
+};
+
+// Throws InputError naming `option` and the metrics that exist.
+const ErrorMetric& findErrorMetric(const std::string& name, const std::string& option);
+const std::vector<ErrorMetric>& errorMetrics();
+
+}  // namespace shadelab

@@ -1,0 +1,391 @@
+#include "core/scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/base/errors.h"
+#include "core/scene/frustum.h"
+#include "core/scene/gltf_detail.h"
+#include "core/scene/transform.h"
+#include "interface.h"
+
+namespace shadelab {
+namespace {
+
+using gltf::fail;
+
+// Extensions whose absence changes nothing we draw, or that we implement.
+const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual",
+                                                    "KHR_materials_emissive_strength"};
+constexpr int kMaxDepth = 1024;  // node nesting; deeper is an attack on the stack, not a model
+
+std::vector<uint8_t> readFile(const std::filesystem::path& path) {
+  std::string name = path.string();
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    throw InputError("glTF file '" + name + "' does not exist");
+  if (std::filesystem::is_directory(path, error))
+    throw InputError("glTF file '" + name + "' is a directory");
+  std::ifstream in(path, std::ios::binary);
+  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw InputError("glTF file '" + name + "' cannot be read");
+  return bytes;
+}
+
+// In-memory loads (the fuzzer) must not touch the file system.
+bool noFileExists(const std::string&, void*) {
+  return false;
+}
+std::string keepPath(const std::string& path, void*) {
+  return path;
+}
+bool refuseRead(std::vector<unsigned char>*, std::string* error, const std::string& path, void*) {
+  if (error) *error += "external file '" + path + "' not read (loading from memory)";
+  return false;
+}
+bool refuseWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+  return false;
+}
+
+std::string trimmed(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  std::replace(text.begin(), text.end(), '\n', ';');
+  return text;
+}
+
+// tinygltf says only "Invalid glTF binary" for a short file; say what is short.
+void checkGlbLength(std::span<const uint8_t> bytes, const std::string& source) {
+  if (bytes.size() < 12)
+    throw InputError(source + ": invalid GLB: truncated, " + std::to_string(bytes.size()) +
+                     " bytes, less than the 12-byte header");
+  uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 8, 4);  // little-endian, as on every host we build for
+  if (length > bytes.size())
+    throw InputError(source + ": invalid GLB: truncated, the header gives " +
+                     std::to_string(length) + " bytes but the file has " +
+                     std::to_string(bytes.size()));
+}
+
+tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& source,
+                           const std::string& baseDir, bool allowFiles) {
+  tinygltf::TinyGLTF loader;
+  if (!allowFiles)
+    loader.SetFsCallbacks({&noFileExists, &keepPath, &refuseRead, &refuseWrite, nullptr});
+  tinygltf::Model model;
+  std::string error, warning;
+  bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (bytes.size() > std::numeric_limits<unsigned int>::max())
+    throw InputError(source + ": file too large");
+  if (binary) checkGlbLength(bytes, source);
+  bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
+                                                 unsigned(bytes.size()), baseDir)
+                   : loader.LoadASCIIFromString(&model, &error, &warning,
+                                                reinterpret_cast<const char*>(bytes.data()),
+                                                unsigned(bytes.size()), baseDir);
+  if (!ok)
+    throw InputError(source + ": invalid " + (binary ? "GLB" : "glTF") + ": " +
+                     trimmed(error.empty() ? warning : error));
+  for (const std::string& extension : model.extensionsRequired)
+    if (!kSupportedExtensions.count(extension))
+      throw InputError(source + ": extensionsRequired: \"" + extension +
+                       "\" is not supported (shadelab supports KHR_lights_punctual and "
+                       "KHR_materials_emissive_strength)");
+  // tinygltf only warns when an external buffer is missing; nothing can be
+  // drawn from it, so it is an error here.
+  for (size_t i = 0; i < model.buffers.size(); ++i)
+    if (model.buffers[i].data.empty() && !model.buffers[i].uri.empty())
+      fail(source, "buffers[" + std::to_string(i) + "]",
+           "'" + model.buffers[i].uri.substr(0, 64) + "' could not be loaded: " + trimmed(warning));
+  return model;
+}
+
+glm::mat4 localMatrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(node.matrix[size_t(i)]);
+    return m;  // glTF stores column-major, as GLM does
+  }
+  glm::mat4 m(1.0f);
+  if (node.translation.size() == 3)
+    m = translation(glm::vec3(float(node.translation[0]), float(node.translation[1]),
+                              float(node.translation[2])));
+  if (node.rotation.size() == 4) {
+    // glTF quaternions are (x, y, z, w); GLM's constructor takes w first.
+    glm::quat q(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
+                float(node.rotation[2]));
+    if (glm::length(q) > 0.0f) m = m * glm::mat4_cast(glm::normalize(q));
+  }
+  if (node.scale.size() == 3)
+    m = m * scaling(glm::vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
+  return m;  // M = T R S
+}
+
+class NodeWalker {
+ public:
+  NodeWalker(const tinygltf::Model& model, const std::string& source, Scene& scene)
+      : model_(model), source_(source), scene_(scene), materials_(model, source, scene) {}
+
+  GltfImport walk(const glm::mat4& parent) {
+    GltfImport result;
+    result_ = &result;
+    size_t before = scene_.objects.size();
+    for (int root : rootNodes()) visit(root, parent, 0);
+    if (scene_.objects.size() == before) fail(source_, "", "the scene has no triangles to draw");
+    return result;
+  }
+
+ private:
+  std::vector<int> rootNodes() const {
+    if (!model_.scenes.empty()) {
+      int index = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+      if (size_t(index) >= model_.scenes.size())
+        fail(source_, "scene",
+             "refers to scene " + std::to_string(index) + ", which does not exist");
+      return model_.scenes[size_t(index)].nodes;
+    }
+    // No scenes: every node that is nobody's child is a root.
+    std::vector<bool> isChild(model_.nodes.size(), false);
+    for (const tinygltf::Node& node : model_.nodes)
+      for (int child : node.children)
+        if (child >= 0 && size_t(child) < isChild.size()) isChild[size_t(child)] = true;
+    std::vector<int> roots;
+    for (size_t i = 0; i < model_.nodes.size(); ++i)
+      if (!isChild[i]) roots.push_back(int(i));
+    return roots;
+  }
+
+  // The matrix stack: a node's world matrix is its parent's times its own.
+  void visit(int index, const glm::mat4& parent, int depth) {
+    std::string where = "nodes[" + std::to_string(index) + "]";
+    if (index < 0 || size_t(index) >= model_.nodes.size())
+      fail(source_, where,
+           "no such node (the file has " + std::to_string(model_.nodes.size()) + ")");
+    // A node has at most one parent, so meeting one twice means a cycle or a
+    // shared child, which glTF forbids.
+    if (!visited_.insert(index).second)
+      fail(source_, where, "is reached twice (the node hierarchy must be a tree)");
+    if (depth > kMaxDepth)
+      fail(source_, where, "nested more than " + std::to_string(kMaxDepth) + " levels deep");
+    const tinygltf::Node& node = model_.nodes[size_t(index)];
+    glm::mat4 world = parent * localMatrix(node);
+    for (int column = 0; column < 4; ++column)
+      for (int row = 0; row < 4; ++row)
+        if (!std::isfinite(world[column][row]))
+          fail(source_, where,
+               "its transform (matrix or translation/rotation/scale) is not finite");
+    // A node scaled to nothing (a common way to hide one) draws nothing, and
+    // its normals would have no inverse transpose.
+    bool collapsed = glm::determinant(glm::mat3(world)) == 0.0f;
+    if (node.mesh >= 0 && !collapsed) addMesh(node.mesh, world, where);
+    if (node.camera >= 0 && !result_->camera) result_->camera = camera(node.camera, world, where);
+    auto light = node.extensions.find("KHR_lights_punctual");
+    if (light != node.extensions.end() && light->second.Has("light"))
+      addLight(light->second.Get("light").GetNumberAsInt(), world, where);
+    for (int child : node.children) visit(child, world, depth + 1);
+  }
+
+  void addMesh(int meshIndex, const glm::mat4& world, const std::string& where) {
+    if (size_t(meshIndex) >= model_.meshes.size())
+      fail(source_, where,
+           "refers to mesh " + std::to_string(meshIndex) + ", which does not exist");
+    const tinygltf::Mesh& mesh = model_.meshes[size_t(meshIndex)];
+    // A mirroring transform turns counter-clockwise triangles clockwise; the
+    // spec asks for the winding to be flipped so back-face culling still works.
+    bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    size_t before = scene_.objects.size();
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      int materialIndex = mesh.primitives[p].material;
+      const Material& material = materials_.material(materialIndex);
+      auto key = std::make_tuple(meshIndex, int(p), mirrored);
+      auto found = meshes_.find(key);
+      if (found == meshes_.end()) {
+        Mesh built = gltf::primitiveMesh(model_, source_, meshIndex, int(p),
+                                         materials_.needsTangents(materialIndex));
+        if (built.indices.empty()) continue;  // points or lines
+        if (mirrored)
+          for (size_t t = 0; t + 2 < built.indices.size(); t += 3)
+            std::swap(built.indices[t + 1], built.indices[t + 2]);
+        found = meshes_.emplace(key, scene_.addMesh(std::move(built))).first;
+      }
+      std::string name = mesh.name.empty() ? "mesh " + std::to_string(meshIndex) : mesh.name;
+      if (mesh.primitives.size() > 1) name += " #" + std::to_string(p);
+      scene_.objects.push_back({name, found->second, world, material});
+    }
+    if (scene_.objects.size() == before)
+      fail(source_, gltf::describeMesh(model_, meshIndex), "has no triangles to draw");
+  }
+
+  Camera camera(int index, const glm::mat4& world, const std::string& where) const {
+    if (size_t(index) >= model_.cameras.size())
+      fail(source_, where, "refers to camera " + std::to_string(index) + ", which does not exist");
+    const tinygltf::Camera& source = model_.cameras[size_t(index)];
+    std::string cameraWhere = "cameras[" + std::to_string(index) + "]";
+    Camera camera;
+    // glTF cameras look down their local -z with +y up.
+    camera.eye = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    camera.at = camera.eye + glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+    camera.up = glm::vec3(world * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+    if (source.type == "orthographic") {
+      const tinygltf::OrthographicCamera& ortho = source.orthographic;
+      camera.projection = Projection::Orthographic;
+      camera.left = -float(std::abs(ortho.xmag));
+      camera.right = float(std::abs(ortho.xmag));
+      camera.bottom = -float(std::abs(ortho.ymag));
+      camera.top = float(std::abs(ortho.ymag));
+      camera.near = float(ortho.znear);
+      camera.far = float(ortho.zfar);
+    } else {
+      const tinygltf::PerspectiveCamera& perspective = source.perspective;
+      camera.fovyDegrees = glm::degrees(float(perspective.yfov));
+      camera.near = float(perspective.znear);
+      // No zfar means an infinite projection; a finite far plane 10^4 times
+      // the near plane keeps the depth buffer's precision usable.
+      camera.far = perspective.zfar > 0.0 ? float(perspective.zfar) : camera.near * 1e4f;
+      if (!(camera.fovyDegrees > 0.0f && camera.fovyDegrees < 180.0f))
+        fail(source_, cameraWhere,
+             "yfov " + std::to_string(perspective.yfov) + " is not between 0 and pi radians");
+    }
+    bool degenerate = glm::length(glm::cross(camera.at - camera.eye, camera.up)) < 1e-6f;
+    if (!(camera.near >= 0.0f && camera.far > camera.near) || camera.left == camera.right ||
+        camera.bottom == camera.top || degenerate)
+      fail(source_, cameraWhere, "degenerate camera (znear/zfar, xmag/ymag or node transform)");
+    if (camera.projection == Projection::Perspective && camera.near == 0.0f)
+      fail(source_, cameraWhere, "znear is 0");
+    return camera;
+  }
+
+  // KHR_lights_punctual, intensities in the extension's units (candela for
+  // point and spot, lux for directional) taken as Ip; point lights fall off
+  // with the spec's inverse square, f_att = 1 / d^2. Spot lights become point
+  // lights (the cone is not modelled) and "range" is not applied.
+  void addLight(int index, const glm::mat4& world, const std::string& where) {
+    if (index < 0 || size_t(index) >= model_.lights.size())
+      fail(source_, where + ": KHR_lights_punctual",
+           "refers to light " + std::to_string(index) + ", which does not exist");
+    const tinygltf::Light& source = model_.lights[size_t(index)];
+    Light light;
+    glm::vec3 colour = glm::clamp(
+        source.color.size() >= 3
+            ? glm::vec3(float(source.color[0]), float(source.color[1]), float(source.color[2]))
+            : glm::vec3(1.0f),
+        0.0f, 1e6f);
+    light.intensity = colour * std::max(float(source.intensity), 0.0f);
+    if (source.type == "directional") {
+      light.type = LightType::Directional;
+      glm::vec3 direction = glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+      light.direction =
+          glm::length(direction) > 0.0f ? glm::normalize(direction) : glm::vec3(0.0f, -1.0f, 0.0f);
+    } else {
+      light.type = LightType::Point;
+      light.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+      light.attenuation = glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+    result_->lights.push_back(light);
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& source_;
+  Scene& scene_;
+  gltf::MaterialTable materials_;
+  std::map<std::tuple<int, int, bool>, uint32_t> meshes_;  // (mesh, primitive, mirrored)
+  std::set<int> visited_;
+  GltfImport* result_ = nullptr;
+};
+
+Scene sceneFromImport(Scene scene, GltfImport import) {
+  scene.lights = std::move(import.lights);
+  if (scene.lights.size() > MAX_LIGHTS) scene.lights.resize(MAX_LIGHTS);
+  scene.camera = import.camera ? *import.camera : frameBounds(sceneBounds(scene));
+  if (scene.lights.empty()) scene.lights.push_back(defaultKeyLight(scene.camera));
+  // glTF materials set ka = kd, so a dim ambient keeps unlit sides readable.
+  scene.ambient = glm::vec3(0.15f);
+  scene.background = glm::vec3(0.05f, 0.05f, 0.06f);
+  return scene;
+}
+
+}  // namespace
+
+GltfImport appendGltf(Scene& scene, const std::filesystem::path& path, const glm::mat4& parent) {
+  std::vector<uint8_t> bytes = readFile(path);
+  std::string source = path.string();
+  tinygltf::Model model =
+      parseModel(bytes, source, path.parent_path().string(), /* allowFiles= */ true);
+  return NodeWalker(model, source, scene).walk(parent);
+}
+
+Scene loadGltfScene(const std::filesystem::path& path) {
+  Scene scene;
+  scene.name = path.stem().string();
+  GltfImport import = appendGltf(scene, path);
+  return sceneFromImport(std::move(scene), std::move(import));
+}
+
+Scene parseGltfScene(std::span<const uint8_t> bytes, const std::string& sourceName) {
+  tinygltf::Model model = parseModel(bytes, sourceName, "", /* allowFiles= */ false);
+  Scene scene;
+  scene.name = sourceName;
+  GltfImport import = NodeWalker(model, sourceName, scene).walk(glm::mat4(1.0f));
+  return sceneFromImport(std::move(scene), std::move(import));
+}
+
+Bounds sceneBounds(const Scene& scene) {
+  Bounds bounds{glm::vec3(0.0f), glm::vec3(0.0f)};
+  bool first = true;
+  for (const Object& object : scene.objects) {
+    Bounds box = transformBounds(computeBounds(scene.meshes[object.mesh]), object.transform);
+    bounds = first ? box : unite(bounds, box);
+    first = false;
+  }
+  return bounds;
+}
+
+// A three-quarter view from the front (+z), a little above and to the
+// right, at the nearest distance where all 8 corners of the box fall inside
+// the 45 degree view, horizontally too for any aspect >= 1. A corner at
+// (x, y) across and z towards the eye needs D >= z + max(|x|, |y|) / tan(fovy/2).
+Camera frameBounds(const Bounds& worldBounds) {
+  Camera camera;
+  glm::vec3 c = centre(worldBounds);
+  float radius = std::max(boundingRadius(worldBounds), 1e-4f);
+  glm::vec3 back = glm::normalize(glm::vec3(0.5f, 0.35f, 1.0f));  // centre -> eye
+  glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), back));
+  glm::vec3 up = glm::cross(back, right);
+  float tanHalf = std::tan(glm::radians(camera.fovyDegrees) * 0.5f);
+  float distance = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    glm::vec3 p = glm::vec3(corner & 1 ? worldBounds.max.x : worldBounds.min.x,
+                            corner & 2 ? worldBounds.max.y : worldBounds.min.y,
+                            corner & 4 ? worldBounds.max.z : worldBounds.min.z) -
+                  c;
+    float across = std::max(std::abs(glm::dot(p, right)), std::abs(glm::dot(p, up)));
+    distance = std::max(distance, glm::dot(p, back) + across / tanHalf);
+  }
+  distance = std::max(distance * 1.05f, radius * 1e-2f);  // a 5% margin
+  camera.at = c;
+  camera.eye = c + distance * back;
+  camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+  camera.near = std::max(distance - radius, distance * 1e-3f) * 0.5f;
+  camera.far = distance + radius * 2.0f;
+  return camera;
+}
+
+// Key light: a directional light from over the camera's left shoulder.
+Light defaultKeyLight(const Camera& camera) {
+  glm::vec3 forward = glm::normalize(camera.at - camera.eye);
+  glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  glm::vec3 up = glm::cross(right, forward);
+  Light light;
+  light.type = LightType::Directional;
+  light.direction = glm::normalize(forward - up + 0.5f * right);
+  light.intensity = glm::vec3(1.0f);
+  return light;
+}
+
+}  // namespace shadelab

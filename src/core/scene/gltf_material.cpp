@@ -1,0 +1,171 @@
+// glTF metallic-roughness materials onto the Phong material (README.md,
+// "glTF materials"), and their textures and samplers onto Scene::textures
+// and SamplerDesc.
+#include <algorithm>
+#include <cmath>
+
+#include "core/scene/gltf_detail.h"
+
+namespace shadelab::gltf {
+namespace {
+
+glm::vec3 vec3Of(const std::vector<double>& values, glm::vec3 fallback) {
+  if (values.size() < 3) return fallback;
+  return glm::vec3(float(values[0]), float(values[1]), float(values[2]));
+}
+
+float clamp01(double value) {
+  return std::clamp(float(value), 0.0f, 1.0f);
+}
+
+TextureWrap wrapOf(int mode) {
+  switch (mode) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE:
+      return TextureWrap::ClampToEdge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT:
+      return TextureWrap::MirroredRepeat;
+    default:
+      return TextureWrap::Repeat;
+  }
+}
+
+// The minification filter decides (it is the one with mip levels); without
+// one, the magnification filter; without either, trilinear.
+TextureFilter filterOf(int minFilter, int magFilter) {
+  switch (minFilter) {
+    case TINYGLTF_TEXTURE_FILTER_NEAREST:
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+      return TextureFilter::Nearest;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+      return TextureFilter::Bilinear;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+      return TextureFilter::Trilinear;
+    default:
+      break;
+  }
+  return magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? TextureFilter::Nearest
+                                                      : TextureFilter::Trilinear;
+}
+
+// 8-bit RGBA from what tinygltf's stb loader decoded (RGBA, 8 or 16 bits).
+std::vector<uint8_t> rgba8Of(const tinygltf::Image& image) {
+  size_t texels = size_t(image.width) * size_t(image.height);
+  if (image.bits == 8) return image.image;
+  std::vector<uint8_t> rgba(texels * 4);
+  for (size_t i = 0; i < rgba.size(); ++i) {
+    uint16_t value = uint16_t(image.image[2 * i] | (image.image[2 * i + 1] << 8));
+    rgba[i] = uint8_t((uint32_t(value) * 255 + 32767) / 65535);
+  }
+  return rgba;
+}
+
+}  // namespace
+
+MaterialTable::MaterialTable(const tinygltf::Model& model, const std::string& source, Scene& scene)
+    : model_(model), source_(source), scene_(scene) {}
+
+bool MaterialTable::needsTangents(int index) const {
+  return index >= 0 && size_t(index) < model_.materials.size() &&
+         model_.materials[size_t(index)].normalTexture.index >= 0;
+}
+
+const Material& MaterialTable::material(int index) {
+  auto found = materials_.find(index);
+  if (found != materials_.end()) return found->second;
+  std::string where = "materials[" + std::to_string(index) + "]";
+  if (index >= int(model_.materials.size())) fail(source_, where, "no such material");
+  // No material: white plastic (baseColor 1, metallic 0, roughness 0.5).
+  tinygltf::Material gltfMaterial;
+  gltfMaterial.pbrMetallicRoughness.metallicFactor = 0.0;
+  gltfMaterial.pbrMetallicRoughness.roughnessFactor = 0.5;
+  const tinygltf::Material& source = index >= 0 ? model_.materials[size_t(index)] : gltfMaterial;
+  const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+
+  glm::vec3 base = glm::clamp(vec3Of(pbr.baseColorFactor, glm::vec3(1.0f)), 0.0f, 1.0f);
+  float alpha = pbr.baseColorFactor.size() >= 4 ? clamp01(pbr.baseColorFactor[3]) : 1.0f;
+  float metallic = clamp01(pbr.metallicFactor);
+  float roughness = clamp01(pbr.roughnessFactor);
+  Material material;
+  // Metals have no diffuse term and tint their highlight; dielectrics reflect
+  // about 4% at normal incidence (the glTF spec's F0).
+  material.kd = base * (1.0f - metallic);
+  material.ka = material.kd;
+  material.ks = glm::mix(glm::vec3(0.04f), base, metallic);
+  // Phong exponent of the same lobe width as the GGX alpha = roughness^2
+  // (n = 2 / alpha^2 - 2, Walter et al. 2007), clamped to a drawable range.
+  float a = std::max(roughness * roughness, 1e-3f);
+  material.shininess = std::clamp(2.0f / (a * a) - 2.0f, 1.0f, 2048.0f);
+  material.emissive = glm::max(vec3Of(source.emissiveFactor, glm::vec3(0.0f)), 0.0f);
+  auto strength = source.extensions.find("KHR_materials_emissive_strength");
+  if (strength != source.extensions.end() && strength->second.Has("emissiveStrength"))
+    material.emissive *=
+        std::max(float(strength->second.Get("emissiveStrength").GetNumberAsDouble()), 0.0f);
+  // Only BLEND is translucent; MASK (alpha cut-outs) draws as opaque.
+  if (source.alphaMode == "BLEND") material.transparency = 1.0f - alpha;
+  if (index >= 0) {
+    material.diffuseMap =
+        slot(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true, where);
+    material.normalMap =
+        slot(source.normalTexture.index, source.normalTexture.texCoord, false, where);
+    if (material.normalMap.present()) material.bumpScale = float(source.normalTexture.scale);
+  }
+  return materials_[index] = material;
+}
+
+TextureSlot MaterialTable::slot(int textureIndex, int texCoord, bool srgb,
+                                const std::string& where) {
+  TextureSlot slot;
+  // Only TEXCOORD_0 is read, so a texture on another set is not applied.
+  if (textureIndex < 0 || texCoord != 0) return slot;
+  std::string textureWhere = where + ": textures[" + std::to_string(textureIndex) + "]";
+  if (size_t(textureIndex) >= model_.textures.size())
+    fail(source_, textureWhere,
+         "no such texture (the file has " + std::to_string(model_.textures.size()) + ")");
+  const tinygltf::Texture& texture = model_.textures[size_t(textureIndex)];
+  if (texture.source < 0 || size_t(texture.source) >= model_.images.size())
+    fail(source_, textureWhere,
+         "refers to image " + std::to_string(texture.source) + ", which does not exist");
+  slot.sampler = sampler(texture.sampler, textureWhere);
+  auto key = std::make_pair(texture.source, srgb);
+  auto found = textures_.find(key);
+  if (found != textures_.end()) {
+    slot.texture = found->second;
+    return slot;
+  }
+  const tinygltf::Image& image = model_.images[size_t(texture.source)];
+  std::string imageName =
+      "images[" + std::to_string(texture.source) + "]" +
+      (image.uri.empty() || image.uri.starts_with("data:") ? std::string()
+                                                           : " '" + image.uri + "'");
+  size_t texels = size_t(std::max(image.width, 0)) * size_t(std::max(image.height, 0));
+  if (image.image.empty() || texels == 0 || image.component != 4 ||
+      (image.bits != 8 && image.bits != 16) ||
+      image.image.size() != texels * 4 * size_t(image.bits / 8))
+    fail(source_, imageName, "could not be loaded or decoded (missing file or unsupported format)");
+  Texture loaded;
+  loaded.name = source_ + " " + imageName;
+  loaded.width = uint32_t(image.width);
+  loaded.height = uint32_t(image.height);
+  loaded.rgba8 = rgba8Of(image);
+  loaded.srgb = srgb;
+  scene_.textures.push_back(std::move(loaded));
+  slot.texture = int32_t(scene_.textures.size() - 1);
+  textures_[key] = slot.texture;
+  return slot;
+}
+
+SamplerDesc MaterialTable::sampler(int index, const std::string& where) const {
+  SamplerDesc desc;  // no sampler: repeat, auto filtering (trilinear)
+  if (index < 0) return desc;
+  if (size_t(index) >= model_.samplers.size())
+    fail(source_, where, "refers to sampler " + std::to_string(index) + ", which does not exist");
+  const tinygltf::Sampler& sampler = model_.samplers[size_t(index)];
+  desc.wrapU = wrapOf(sampler.wrapS);
+  desc.wrapV = wrapOf(sampler.wrapT);
+  desc.filter = filterOf(sampler.minFilter, sampler.magFilter);
+  return desc;
+}
+
+}  // namespace shadelab::gltf

@@ -1,0 +1,46 @@
+#pragma once
+// "Model no more than the scene needs": geometry detail chosen from how large
+// it appears. Both functions take a screen-space error bound in pixels and
+// turn it into a world-space length at each object's nearest point.
+#include <cstdint>
+
+#include "core/scene/scene.h"
+
+namespace shadelab {
+
+// The view detail is chosen for: the scene's camera and the image size.
+struct ViewSize {
+  Camera camera;
+  uint32_t width = 1280;
+  uint32_t height = 720;
+};
+
+// Pixels one world unit covers at eye-space depth `depth` (> 0): perspective
+// height / (2 depth tan(fovy / 2)); a frustum's height near / ((top - bottom)
+// depth); orthographic height / (top - bottom) at any depth.
+float pixelsPerUnit(const ViewSize& view, float depth);
+// The same at the nearest point of a world-space sphere (clamped to the near
+// plane), so no part of it is seen larger.
+float pixelsPerUnitForSphere(const ViewSize& view, glm::vec3 centre, float radius);
+
+// The chord error of a circle of radius r drawn with n segments is
+// r (1 - cos(pi / n)); the smallest n >= 3 keeping it within maxError.
+uint32_t segmentsForChordError(float radius, float maxError);
+
+// --tess auto: each procedural shape's tessellation from its projected size,
+// so the chord error stays within maxErrorPixels (spheres and tori by their
+// circles, icospheres by their edges, the teapot by its body's radius 2 split
+// into 4 patches around). Planes and boxes are exact and keep theirs. A mesh
+// shared by several objects takes the finest any of them needs.
+void tessellateForView(Scene& scene, const ViewSize& view, float maxErrorPixels);
+
+struct SimplifyStats {
+  uint64_t trianglesBefore = 0;  // of the meshes simplified, once each
+  uint64_t trianglesAfter = 0;
+};
+// --simplify PX: every loaded (custom) mesh simplified by meshopt_simplify
+// until its geometric error, projected at the object's nearest point, would
+// exceed maxErrorPixels; then re-ordered for the vertex cache and fetch.
+SimplifyStats simplifyForView(Scene& scene, const ViewSize& view, float maxErrorPixels);
+
+}  // namespace shadelab

@@ -1,0 +1,140 @@
+#pragma once
+// The scene model of DESIGN.md: a camera, an ambient light, point and
+// directional lights, and objects (a mesh, a transform and a material).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/scene/environment.h"
+#include "core/scene/mesh.h"
+#include "core/scene/shape.h"
+
+namespace shadelab {
+
+enum class Projection { Perspective, Frustum, Orthographic };
+
+struct Camera {
+  glm::vec3 eye{0.0f, 2.0f, 6.0f};
+  glm::vec3 at{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  Projection projection = Projection::Perspective;
+  float fovyDegrees = 45.0f;  // perspective
+  float near = 0.1f;
+  float far = 100.0f;
+  // Frustum: the window on the near plane; orthographic: the view volume's sides.
+  float left = -1.0f, right = 1.0f, bottom = -1.0f, top = 1.0f;
+
+  glm::mat4 viewMatrix() const;
+  // Vulkan clip space (y down, depth 0..1); `aspect` is width / height and
+  // applies to the perspective projection only. reversedZ maps near to 1, far to 0.
+  glm::mat4 projectionMatrix(float aspect, bool reversedZ = false) const;
+};
+
+enum class LightType { Point, Directional };
+
+struct Light {
+  LightType type = LightType::Point;
+  glm::vec3 position{0.0f, 5.0f, 0.0f};    // point lights, world space
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the direction light travels
+  glm::vec3 intensity{1.0f};               // Ip per RGB channel
+  glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // f_att = 1 / (a + b d + c d^2)
+};
+
+// Texture sampling, per texture slot of a material (glTF samplers map here).
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
+struct SamplerDesc {
+  TextureWrap wrapU = TextureWrap::Repeat;
+  TextureWrap wrapV = TextureWrap::Repeat;
+  TextureFilter filter = TextureFilter::Trilinear;
+  float maxAnisotropy = 8.0f;  // Anisotropic only: 2..16
+  auto operator<=>(const SamplerDesc&) const = default;
+};
+
+// A texture's texels as loaded or generated, before upload: 8-bit RGBA, row 0
+// at the top. Colour textures hold sRGB-encoded values (sampled through an
+// _SRGB format, so shaders see linear values); data textures (normal and
+// height maps) are linear.
+struct Texture {
+  std::string name;  // the file or generator it came from, for messages
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> rgba8;  // width * height * 4
+  bool srgb = true;
+};
+
+// Texture coordinates generated for a material instead of the mesh's own
+// (an S-mapping, for meshes without UVs): see core/scene/uv_mapping.h.
+enum class UvProjection { Mesh, Planar, Cylindrical, Spherical, Box };
+
+// A material's use of one texture: an index into Scene::textures (-1: none).
+struct TextureSlot {
+  int32_t texture = -1;
+  SamplerDesc sampler;
+  bool present() const { return texture >= 0; }
+};
+
+// The Phong material: I = Ia ka + sum f_att Ip [kd (N.L) + ks (R.V)^n], plus the
+// terms the ray tracer and environment mapping add: a mirror fraction, a
+// transmitted fraction with its index of refraction, and emitted light.
+struct Material {
+  glm::vec3 ka{0.1f};
+  glm::vec3 kd{0.7f};
+  glm::vec3 ks{0.3f};
+  float shininess = 32.0f;
+  float reflectivity = 0.0f;  // kr: fraction of the reflected ray's colour added, 0..1
+  float transparency = 0.0f;  // kt: fraction of the refracted ray's colour added, 0..1
+  float ior = 1.5f;           // index of refraction of the inside; the outside is 1 (air)
+  glm::vec3 emissive{0.0f};   // added unlit
+  TextureSlot diffuseMap;     // multiplies kd (and ka)
+  TextureSlot normalMap;      // tangent space, xyz = 2 * rgb - 1
+  TextureSlot heightMap;      // r = height; the normal is perturbed by its derivatives
+  float bumpScale = 1.0f;     // normal map xy scale / height map amplitude
+  UvProjection uvProjection = UvProjection::Mesh;  // where the UVs come from
+  glm::vec2 uvScale{1.0f};    // texture repeats per unit of UV (tiling)
+};
+
+struct Object {
+  std::string name;
+  uint32_t mesh = 0;  // index into Scene::meshes
+  glm::mat4 transform{1.0f};
+  Material material;
+};
+
+struct Scene {
+  std::string name;
+  Camera camera;
+  glm::vec3 ambient{1.0f};     // Ia
+  glm::vec3 background{0.0f};  // linear clear colour
+  Environment environment;     // what surrounds the scene; none: the background colour
+  std::vector<Light> lights;
+  std::vector<Mesh> meshes;       // what is drawn
+  std::vector<ShapeDesc> shapes;  // parallel to meshes: how each was built (Custom: loaded)
+  std::vector<Object> objects;
+  std::vector<Texture> textures;  // referenced by Material texture slots
+
+  uint32_t addMesh(Mesh mesh);           // a custom mesh (kept as is when re-tessellating)
+  uint32_t addShape(const ShapeDesc& shape);
+  // Rebuilds every procedural mesh at `scale` times its base tessellation.
+  void retessellate(float scale);
+  uint64_t triangleCount() const;
+};
+
+// Built-in scenes need no files. Throws InputError for an unknown name,
+// listing the names that exist.
+Scene builtinScene(const std::string& name);
+std::vector<std::string> builtinSceneNames();
+// The `highlight` scene with its plane cut into quadsPerSide^2 quads.
+Scene highlightScene(uint32_t quadsPerSide);
+// The `zfight` scene: two large parallel planes kZFightGap apart, far from a
+// camera with this projection and near plane (the built-in one: perspective,
+// near 0.1). Unlit colours: the nearer plane kZFightNearColor, the farther
+// kZFightFarColor, listed first; black background.
+inline constexpr float kZFightGap = 0.05f;
+inline constexpr glm::vec3 kZFightNearColor{1.0f, 0.0f, 0.0f};
+inline constexpr glm::vec3 kZFightFarColor{0.0f, 0.0f, 1.0f};
+Scene zfightScene(Projection projection, float near);
+
+}  // namespace shadelab

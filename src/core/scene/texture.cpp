@@ -1,0 +1,86 @@
+#include "core/scene/texture.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "core/base/errors.h"
+#include "core/base/image.h"
+
+namespace shadelab {
+
+Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
+  std::string name = path.string();
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    throw InputError("texture file '" + name + "' does not exist");
+  if (std::filesystem::is_directory(path, error))
+    throw InputError("texture file '" + name + "' is a directory, expected an image");
+  OIIO::ImageBuf source(name);
+  if (!source.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+    throw InputError("texture file '" + name +
+                     "' cannot be read as an image: " + source.geterror());
+  const OIIO::ImageSpec& spec = source.spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw InputError("texture file '" + name + "' holds no pixels");
+  // Only floating-point files hold linear light; 8- and 16-bit files hold
+  // encoded values already (sRGB colour, or raw data).
+  OIIO::TypeDesc stored = source.nativespec().format;  // `spec` is the float buffer's
+  bool linearLight =
+      stored.basetype == OIIO::TypeDesc::FLOAT || stored.basetype == OIIO::TypeDesc::HALF;
+  int channels = spec.nchannels;
+  std::vector<float> raw(size_t(spec.width) * spec.height * channels);
+  source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
+                    OIIO::TypeDesc::FLOAT, raw.data());
+
+  Texture texture;
+  texture.name = name;
+  texture.width = uint32_t(spec.width);
+  texture.height = uint32_t(spec.height);
+  texture.srgb = role == TextureRole::Color;
+  texture.rgba8.resize(size_t(texture.width) * texture.height * 4);
+  auto quantize = [](float value) {
+    return uint8_t(
+        std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 255.0f));
+  };
+  for (size_t p = 0; p < size_t(texture.width) * texture.height; ++p) {
+    const float* in = &raw[p * channels];
+    float rgba[4] = {in[0], channels >= 3 ? in[1] : in[0], channels >= 3 ? in[2] : in[0],
+                     channels == 4 ? in[3] : (channels == 2 ? in[1] : 1.0f)};
+    for (int c = 0; c < 4; ++c) {
+      bool encode = c < 3 && linearLight && role == TextureRole::Color;
+      texture.rgba8[p * 4 + c] = quantize(encode ? linearToSrgb(rgba[c]) : rgba[c]);
+    }
+  }
+  return texture;
+}
+
+uint32_t mipLevelCount(uint32_t width, uint32_t height) {
+  return uint32_t(std::bit_width(std::max({width, height, 1u})));
+}
+
+glm::uvec2 mipLevelSize(uint32_t width, uint32_t height, uint32_t level) {
+  return {std::max(1u, width >> level), std::max(1u, height >> level)};
+}
+
+namespace {
+constexpr const char* kFilterNames[] = {"nearest", "bilinear", "trilinear", "aniso"};
+}
+
+const char* textureFilterName(TextureFilter filter) {
+  return kFilterNames[int(filter)];
+}
+
+std::optional<TextureFilter> parseTextureFilter(std::string_view name) {
+  for (int i = 0; i < 4; ++i)
+    if (name == kFilterNames[i]) return TextureFilter(i);
+  return std::nullopt;
+}
+
+Texture solidTexture(glm::u8vec4 rgba, TextureRole role, const std::string& name) {
+  return {name, 1, 1, {rgba.r, rgba.g, rgba.b, rgba.a}, role == TextureRole::Color};
+}
+
+}  // namespace shadelab

@@ -1,0 +1,38 @@
+#pragma once
+// Textures on the CPU: reading image files into Texture and the size of
+// their mip chains. Upload and mip generation are on the device
+// (passes/scene_textures, passes/mip_generation).
+#include <cstdint>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string_view>
+
+#include "core/scene/scene.h"
+
+namespace shadelab {
+
+enum class TextureRole {
+  Color,  // sRGB-encoded texels, sampled through an _SRGB format
+  Data,   // normal and height maps: the values themselves, linear
+};
+
+// Reads PNG, JPEG, Radiance HDR, EXR (anything OpenImageIO reads) into 8-bit
+// RGBA. 8-bit files keep their values; float files (linear light) are sRGB
+// encoded for Color and clamped to 0..1 for Data. Grey replicates into RGB,
+// missing alpha is opaque. Throws InputError naming the file.
+Texture loadTextureFile(const std::filesystem::path& path, TextureRole role);
+
+// floor(log2(max(width, height))) + 1: every level down to 1x1.
+uint32_t mipLevelCount(uint32_t width, uint32_t height);
+// Level `level`'s size: each axis halves, rounding down, never below 1.
+glm::uvec2 mipLevelSize(uint32_t width, uint32_t height, uint32_t level);
+
+// "nearest", "bilinear", "trilinear", "aniso": the --filter and JSON "filter" names.
+const char* textureFilterName(TextureFilter filter);
+std::optional<TextureFilter> parseTextureFilter(std::string_view name);
+
+// A 1x1 texture of one value: the dummy bound to a material's empty slots.
+Texture solidTexture(glm::u8vec4 rgba, TextureRole role, const std::string& name);
+
+}  // namespace shadelab

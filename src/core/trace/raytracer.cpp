@@ -1,0 +1,497 @@
+#include "core/trace/raytracer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <thread>
+
+#include "core/base/errors.h"
+#include "core/scene/lighting.h"
+#include "core/trace/trace_material.h"
+#include "core/trace/trace_shapes.h"
+#include "core/scene/uv_mapping.h"
+#include "interface.h"
+
+namespace shadelab {
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+// Past this, a finer tessellation costs more BVH build time than it removes
+// error: 256k triangles are far below a pixel at any size we trace.
+constexpr size_t kMaxTracedTriangles = 1u << 18;
+
+enum class Surface { Sphere, Plane, Box, Mesh };
+
+Surface surfaceOf(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::UvSphere:
+    case ShapeKind::Icosphere:
+      return Surface::Sphere;
+    case ShapeKind::Plane:
+      return Surface::Plane;
+    case ShapeKind::Box:
+      return Surface::Box;
+    default:
+      return Surface::Mesh;
+  }
+}
+
+// Wellons' "lowbias32" integer hash: a fixed, well-mixed function of the
+// pixel and sample, so sample positions never depend on thread scheduling.
+uint32_t mixBits(uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+float jitter(uint32_t x, uint32_t y, uint32_t sample, uint32_t dimension) {
+  uint32_t h = mixBits(x ^ mixBits(y ^ mixBits(sample * 2u + dimension)));
+  return float(h >> 8) * (1.0f / 16777216.0f);  // 24 bits: uniform in [0, 1)
+}
+
+Bounds transformBounds(const Bounds& box, const glm::mat4& transform) {
+  Bounds result{glm::vec3(kInfinity), glm::vec3(-kInfinity)};
+  for (int corner = 0; corner < 8; ++corner) {
+    glm::vec3 local{corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
+                    corner & 4 ? box.max.z : box.min.z};
+    glm::vec3 world = glm::vec3(transform * glm::vec4(local, 1.0f));
+    result.min = glm::min(result.min, world);
+    result.max = glm::max(result.max, world);
+  }
+  return result;
+}
+
+}  // namespace
+
+TraceStats& TraceStats::operator+=(const TraceStats& other) {
+  primaryRays += other.primaryRays;
+  shadowRays += other.shadowRays;
+  secondaryRays += other.secondaryRays;
+  totalInternalReflections += other.totalInternalReflections;
+  return *this;
+}
+
+glm::vec3 missColour(const Scene& scene, glm::vec3 direction) {
+  return scene.environment.present() ? environmentRadiance(scene.environment, direction)
+                                     : scene.background;
+}
+
+CameraRays::CameraRays(const Camera& camera, uint32_t width, uint32_t height)
+    : eye_(camera.eye), width_(width), height_(height) {
+  const glm::mat4 clip =
+      camera.projectionMatrix(float(width) / float(height)) * camera.viewMatrix();
+  clipToWorld_ = glm::inverse(glm::dmat4(clip));
+}
+
+Ray CameraRays::through(float x, float y) const {
+  const double ndcX = 2.0 * double(x) / width_ - 1.0;
+  const double ndcY = 2.0 * double(y) / height_ - 1.0;  // Vulkan: y down, like the rows
+  glm::dvec4 nearPoint = clipToWorld_ * glm::dvec4(ndcX, ndcY, 0.0, 1.0);
+  glm::dvec4 farPoint = clipToWorld_ * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+  const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
+  const glm::dvec3 end = glm::dvec3(farPoint) / farPoint.w;
+  return {glm::vec3(origin), glm::vec3(end - origin)};
+}
+
+struct RayTracer::TracedObject {
+  Surface surface = Surface::Mesh;
+  float radius = 1.0f;          // sphere
+  float size = 1.0f;            // plane
+  glm::vec3 halfExtents{0.5f};  // box
+  const Mesh* mesh = nullptr;   // mesh
+  const Bvh* bvh = nullptr;     // mesh
+  glm::mat4 worldToObject{1.0f};
+  glm::mat3 normalToWorld{1.0f};  // inverse transpose of the transform's 3x3
+  Bounds worldBounds;
+  float transparency = 0.0f;
+  uint32_t sceneObject = 0;  // index into Scene::objects
+  UvProjection projection = UvProjection::Mesh;
+  Bounds uvBounds;  // the scene mesh's box, which S-mappings are fitted to (as at upload)
+
+  Ray toLocal(const Ray& ray) const {
+    return {glm::vec3(worldToObject * glm::vec4(ray.origin, 1.0f)),
+            glm::mat3(worldToObject) * ray.direction};
+  }
+  // Object-space hit; `geometric` is the unnormalised outward face normal.
+  bool intersect(const Ray& local, float tMin, float tMax, LocalHit& hit,
+                 glm::vec3& geometric) const;
+  uint32_t countHits(const Ray& local, float tMax) const;
+  // The texture coordinates at an object-space point on (or, linearly
+  // extended, near) the surface hit with `normal` on `triangle`.
+  glm::vec2 uvAt(glm::vec3 point, glm::vec3 normal, uint32_t triangle) const;
+};
+
+glm::vec2 RayTracer::TracedObject::uvAt(glm::vec3 point, glm::vec3 normal,
+                                        uint32_t triangle) const {
+  if (projection != UvProjection::Mesh) return projectUv(projection, point, normal, uvBounds);
+  switch (surface) {
+    case Surface::Sphere:
+      return sphericalUv(point / glm::length(point));
+    case Surface::Plane:
+      return planeUv(point, size);
+    case Surface::Box:
+      return boxFaceUv(point, halfExtents, normal);
+    case Surface::Mesh:
+      return triangleUv(point, mesh->vertices[mesh->indices[3 * triangle]],
+                        mesh->vertices[mesh->indices[3 * triangle + 1]],
+                        mesh->vertices[mesh->indices[3 * triangle + 2]]);
+  }
+  return glm::vec2(0.0f);
+}
+
+bool RayTracer::TracedObject::intersect(const Ray& local, float tMin, float tMax, LocalHit& hit,
+                                        glm::vec3& geometric) const {
+  bool found = false;
+  switch (surface) {
+    case Surface::Sphere:
+      found = intersectSphere(local, radius, tMin, tMax, hit);
+      break;
+    case Surface::Plane:
+      found = intersectPlane(local, size, tMin, tMax, hit);
+      break;
+    case Surface::Box:
+      found = intersectBox(local, halfExtents, tMin, tMax, hit);
+      break;
+    case Surface::Mesh: {
+      TriangleHit triangle;
+      if (!bvh->intersect(local, tMin, tMax, triangle)) return false;
+      const Vertex& a = mesh->vertices[mesh->indices[3 * triangle.triangle]];
+      const Vertex& b = mesh->vertices[mesh->indices[3 * triangle.triangle + 1]];
+      const Vertex& c = mesh->vertices[mesh->indices[3 * triangle.triangle + 2]];
+      const float w = 1.0f - triangle.u - triangle.v;
+      hit.t = triangle.t;
+      hit.normal = w * a.normal + triangle.u * b.normal + triangle.v * c.normal;
+      hit.uv = w * a.uv + triangle.u * b.uv + triangle.v * c.uv;
+      hit.triangle = triangle.triangle;
+      geometric = glm::cross(b.position - a.position, c.position - a.position);
+      return true;
+    }
+  }
+  geometric = hit.normal;
+  return found;
+}
+
+uint32_t RayTracer::TracedObject::countHits(const Ray& local, float tMax) const {
+  switch (surface) {
+    case Surface::Sphere:
+      return countInRange(sphereCrossings(local, radius), 0.0f, tMax);
+    case Surface::Plane:
+      return countInRange(planeCrossings(local, size), 0.0f, tMax);
+    case Surface::Box:
+      return countInRange(boxCrossings(local, halfExtents), 0.0f, tMax);
+    case Surface::Mesh:
+      return bvh->countHits(local, 0.0f, tMax);
+  }
+  return 0;
+}
+
+RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene) {
+  std::vector<const Bvh*> meshBvh(scene.meshes.size(), nullptr);
+  std::vector<const Mesh*> meshSource(scene.meshes.size(), nullptr);
+  for (const Object& object : scene.objects) {
+    const ShapeDesc& shape = scene.shapes[object.mesh];
+    if (surfaceOf(shape.kind) != Surface::Mesh || meshBvh[object.mesh]) continue;
+    // Segments grow with the scale on both parameters, triangles with its
+    // square: stop where a mesh would pass kMaxTracedTriangles.
+    const float triangles = float(std::max<size_t>(1, scene.meshes[object.mesh].triangleCount()));
+    const float scale =
+        std::clamp(std::sqrt(float(kMaxTracedTriangles) / triangles), 1.0f, tessellationScale);
+    meshes_.push_back(std::make_unique<Mesh>(
+        shape.kind == ShapeKind::Custom ? scene.meshes[object.mesh] : buildShape(shape, scale)));
+    bvhs_.push_back(std::make_unique<Bvh>(*meshes_.back()));
+    meshBvh[object.mesh] = bvhs_.back().get();
+    meshSource[object.mesh] = meshes_.back().get();
+  }
+  for (uint32_t index = 0; index < scene.objects.size(); ++index) {
+    const Object& object = scene.objects[index];
+    const ShapeDesc& shape = scene.shapes[object.mesh];
+    // A collapsed (zero-scale) or non-finite transform has no inverse: the
+    // object is drawn as nothing, as the rasteriser's degenerate triangles are.
+    const float determinant = glm::determinant(glm::mat3(object.transform));
+    if (!(std::abs(determinant) > 1e-30f) || !std::isfinite(determinant)) continue;
+    TracedObject traced;
+    traced.sceneObject = index;
+    traced.surface = surfaceOf(shape.kind);
+    traced.radius = shape.radius;
+    traced.size = shape.size;
+    traced.halfExtents = shape.halfExtents;
+    traced.mesh = meshSource[object.mesh];
+    traced.bvh = meshBvh[object.mesh];
+    traced.worldToObject = glm::inverse(object.transform);
+    traced.normalToWorld = glm::transpose(glm::inverse(glm::mat3(object.transform)));
+    traced.transparency = object.material.transparency;
+    traced.projection = object.material.uvProjection;
+    if (traced.projection != UvProjection::Mesh)
+      traced.uvBounds = computeBounds(scene.meshes[object.mesh]);
+    Bounds local;
+    switch (traced.surface) {
+      case Surface::Sphere:
+        local = {glm::vec3(-shape.radius), glm::vec3(shape.radius)};
+        break;
+      case Surface::Plane:
+        local = {{-0.5f * shape.size, 0.0f, -0.5f * shape.size},
+                 {0.5f * shape.size, 0.0f, 0.5f * shape.size}};
+        break;
+      case Surface::Box:
+        local = {-shape.halfExtents, shape.halfExtents};
+        break;
+      case Surface::Mesh:
+        local = traced.bvh->bounds();
+        break;
+    }
+    traced.worldBounds = transformBounds(local, object.transform);
+    objects_.push_back(traced);
+  }
+  for (const Texture& texture : scene.textures) textures_.emplace_back(texture);
+}
+
+RayTracer::~RayTracer() = default;
+
+std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float tMax) const {
+  const glm::vec3 inverse = 1.0f / ray.direction;
+  LocalHit best;
+  glm::vec3 bestGeometric{0.0f};
+  int bestObject = -1;
+  Ray bestLocal;
+  for (size_t i = 0; i < objects_.size(); ++i) {
+    const TracedObject& object = objects_[i];
+    float tEntry;
+    if (!intersectBounds(object.worldBounds, ray, inverse, tMin, tMax, tEntry)) continue;
+    LocalHit hit;
+    glm::vec3 geometric;
+    const Ray local = object.toLocal(ray);
+    if (!object.intersect(local, tMin, tMax, hit, geometric)) continue;
+    best = hit;
+    bestLocal = local;
+    bestGeometric = geometric;
+    bestObject = int(i);
+    tMax = hit.t;
+  }
+  if (bestObject < 0) return std::nullopt;
+  const TracedObject& object = objects_[size_t(bestObject)];
+  SurfaceHit hit;
+  hit.t = best.t;
+  hit.object = object.sceneObject;
+  hit.position = ray.at(best.t);
+  hit.uv = best.uv;
+  hit.localPosition = bestLocal.at(best.t);
+  hit.localNormal = bestGeometric;
+  hit.triangle = best.triangle;
+  glm::vec3 geometric = object.normalToWorld * bestGeometric;
+  glm::vec3 shading = object.normalToWorld * best.normal;
+  const float geometricLength = glm::length(geometric);
+  const float shadingLength = glm::length(shading);
+  geometric = geometricLength > 0.0f ? geometric / geometricLength : -glm::normalize(ray.direction);
+  shading = shadingLength > 0.0f ? shading / shadingLength : geometric;
+  hit.frontFace = glm::dot(ray.direction, geometric) <= 0.0f;
+  const float side = hit.frontFace ? 1.0f : -1.0f;
+  hit.geometricNormal = side * geometric;
+  hit.shadingNormal = side * shading;
+  return hit;
+}
+
+float RayTracer::transmittance(const Ray& ray, float tMax) const {
+  const glm::vec3 inverse = 1.0f / ray.direction;
+  float passed = 1.0f;
+  for (const TracedObject& object : objects_) {
+    float tEntry;
+    if (!intersectBounds(object.worldBounds, ray, inverse, 0.0f, tMax, tEntry)) continue;
+    const uint32_t crossings = object.countHits(object.toLocal(ray), tMax);
+    if (crossings == 0) continue;
+    if (object.transparency <= 0.0f) return 0.0f;
+    passed *= std::pow(object.transparency, float(crossings));
+  }
+  return passed;
+}
+
+Ray RayTracer::offsetRay(const SurfaceHit& hit, glm::vec3 direction, float epsilon) const {
+  const float side = glm::dot(direction, hit.geometricNormal) >= 0.0f ? 1.0f : -1.0f;
+  // Rounding error grows with the coordinates' magnitude, so does the offset.
+  const glm::vec3 magnitude = glm::abs(hit.position);
+  const float scale = std::max({1.0f, magnitude.x, magnitude.y, magnitude.z});
+  return {hit.position + side * epsilon * scale * hit.geometricNormal, direction};
+}
+
+// Phong at the hit with the unshadowed lights only: the lights go into the
+// same FrameData the shaders read, moved so the viewer sits at the origin,
+// which is where lighting.cpp (like the shader's eye space) takes V from.
+glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& material, glm::vec3 viewer,
+                                  const TraceSettings& settings, TraceStats& stats) const {
+  gpu::FrameData frame{};
+  frame.ambient = glm::vec4(scene_.ambient, 0.0f);
+  uint32_t visible = 0;
+  const size_t count = std::min<size_t>(scene_.lights.size(), MAX_LIGHTS);
+  for (size_t i = 0; i < count; ++i) {
+    const Light& light = scene_.lights[i];
+    const bool point = light.type == LightType::Point;
+    glm::vec3 toLight = point ? light.position - hit.position : -light.direction;
+    if (!point) {
+      const float length = glm::length(toLight);
+      if (!(length > 0.0f)) continue;
+      toLight /= length;
+    }
+    // The equation adds nothing where N.L <= 0: no shadow ray needed there.
+    if (!(glm::dot(toLight, hit.shadingNormal) > 0.0f)) continue;
+    float passed = 1.0f;
+    if (settings.shadows) {
+      Ray shadow = offsetRay(hit, toLight, settings.epsilon);
+      if (point) shadow.direction = light.position - shadow.origin;  // the segment is 0 < t < 1
+      ++stats.shadowRays;
+      passed = transmittance(shadow, point ? 1.0f : kInfinity);
+      if (passed <= 0.0f) continue;
+    }
+    gpu::GpuLight& out = frame.lights[visible++];
+    out.position = point ? glm::vec4(light.position - viewer, 1.0f) : glm::vec4(toLight, 0.0f);
+    out.type.x = point ? LIGHT_POINT : LIGHT_DIRECTIONAL;
+    out.intensity = glm::vec4(passed * light.intensity, 0.0f);
+    out.attenuation = glm::vec4(light.attenuation, 0.0f);
+  }
+  return material.emissive + illuminate(frame, visible, hit.position - viewer, hit.shadingNormal,
+                                        material, settings.blinn);
+}
+
+Material RayTracer::materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const {
+  const Material& material = scene_.objects[hit.object].material;
+  if (!material.diffuseMap.present() && !material.normalMap.present() &&
+      !material.heightMap.present())
+    return material;
+  // objects_ is in scene order, some objects left out: find the hit's.
+  const TracedObject& object = *std::lower_bound(
+      objects_.begin(), objects_.end(), hit.object,
+      [](const TracedObject& traced, uint32_t index) { return traced.sceneObject < index; });
+  const glm::vec3 incident = glm::normalize(ray.direction);
+  UvFrame frame;
+  frame.uv = object.projection == UvProjection::Mesh
+                 ? hit.uv
+                 : object.uvAt(hit.localPosition, hit.localNormal, hit.triangle);
+  tangentPlaneAxes(hit.geometricNormal, incident, frame.along, frame.across);
+  // The uv's derivatives by central differences a small step either side
+  // (exact for the linear mappings, within float rounding for the rest).
+  const Bounds& box = object.worldBounds;
+  const float step = 1e-4f * std::max(1.0f, glm::length(box.max - box.min));
+  const glm::mat3 toLocal(object.worldToObject);
+  auto derivative = [&](glm::vec3 axis) {
+    const glm::vec3 offset = toLocal * (step * axis);
+    glm::vec2 difference = object.uvAt(hit.localPosition + offset, hit.localNormal, hit.triangle) -
+                           object.uvAt(hit.localPosition - offset, hit.localNormal, hit.triangle);
+    difference.x -= std::round(difference.x);  // u jumps by 1 across a seam
+    return difference / (2.0f * step);
+  };
+  frame.uvPerAlong = derivative(frame.along);
+  frame.uvPerAcross = derivative(frame.across);
+  const float cosine = std::abs(glm::dot(hit.geometricNormal, incident));
+  return texturedMaterial(material, textures_, frame, footprint, cosine, hit.shadingNormal);
+}
+
+glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth,
+                           float weight, const TraceSettings& settings, TraceStats& stats,
+                           RayCone cone) const {
+  const float footprint = cone.width + cone.spread * hit.t * glm::length(ray.direction);
+  const RayCone next{footprint, cone.spread};
+  const Material material = materialAt(ray, hit, footprint);
+  glm::vec3 colour = localShading(hit, material, viewer, settings, stats);
+  if (depth >= settings.maxDepth) return colour;
+  const glm::vec3 incident = glm::normalize(ray.direction);
+  const float kr = material.reflectivity, kt = material.transparency;
+  if (kr > 0.0f && weight * kr >= settings.minContribution) {
+    const Ray reflected =
+        offsetRay(hit, mirrorDirection(incident, hit.shadingNormal), settings.epsilon);
+    colour += kr * traceRay(reflected, kInfinity, reflected.origin, depth + 1, weight * kr,
+                            settings, stats, next);
+  }
+  if (kt > 0.0f && weight * kt >= settings.minContribution) {
+    // Entering the object from air (eta = 1 / ior) or leaving it (ior / 1),
+    // by the side of the surface the ray arrived on.
+    const float eta = hit.frontFace ? 1.0f / material.ior : material.ior;
+    std::optional<glm::vec3> refracted = refractDirection(incident, hit.shadingNormal, eta);
+    if (!refracted) ++stats.totalInternalReflections;
+    // Total internal reflection sends the transmitted share back inside.
+    const glm::vec3 direction =
+        refracted ? glm::normalize(*refracted) : mirrorDirection(incident, hit.shadingNormal);
+    const Ray transmitted = offsetRay(hit, direction, settings.epsilon);
+    colour += kt * traceRay(transmitted, kInfinity, transmitted.origin, depth + 1, weight * kt,
+                            settings, stats, next);
+  }
+  return colour;
+}
+
+glm::vec3 RayTracer::traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth,
+                              float weight, const TraceSettings& settings, TraceStats& stats,
+                              RayCone cone) const {
+  ++(depth == 0 ? stats.primaryRays : stats.secondaryRays);
+  std::optional<SurfaceHit> hit = intersect(ray, 0.0f, tMax);
+  if (!hit) return missColour(scene_, ray.direction);
+  return shade(ray, *hit, viewer, depth, weight, settings, stats, cone);
+}
+
+// The box-filtered mean of the pixel's n x n stratified samples, each with
+// a cone one stratum wide (the box filter averages the strata).
+glm::vec3 RayTracer::tracePixel(const CameraRays& camera, uint32_t x, uint32_t y, uint32_t grid,
+                                const TraceSettings& settings, TraceStats& stats) const {
+  const Ray centre = camera.through(float(x) + 0.5f, float(y) + 0.5f);
+  const Ray beside = camera.through(float(x) + 1.5f, float(y) + 0.5f);
+  const float nearWidth = glm::length(beside.origin - centre.origin);
+  const float farWidth = glm::length(beside.at(1.0f) - centre.at(1.0f));
+  const RayCone cone{nearWidth / float(grid),
+                     (farWidth - nearWidth) / glm::length(centre.direction) / float(grid)};
+  glm::vec3 sum{0.0f};
+  for (uint32_t s = 0; s < grid * grid; ++s) {
+    float dx = 0.5f, dy = 0.5f;
+    if (grid > 1) {
+      dx = (float(s % grid) + jitter(x, y, s, 0)) / float(grid);
+      dy = (float(s / grid) + jitter(x, y, s, 1)) / float(grid);
+    }
+    const Ray ray = camera.through(float(x) + dx, float(y) + dy);
+    sum += traceRay(ray, 1.0f, camera.viewer(), 0, 1.0f, settings, stats, cone);
+  }
+  return sum / float(grid * grid);
+}
+
+void checkSamplesPerPixel(uint32_t samplesPerPixel) {
+  const uint32_t grid = uint32_t(std::lround(std::sqrt(double(samplesPerPixel))));
+  if (samplesPerPixel == 0 || grid * grid != samplesPerPixel || grid > 16)
+    throw InputError("samples per pixel " + std::to_string(samplesPerPixel) +
+                     ": expected a square number n*n from 1 to 256 (1, 4, 9, 16, ...)");
+}
+
+TraceResult RayTracer::render(const TraceSettings& settings) const {
+  if (settings.width == 0 || settings.height == 0 || settings.width > 16384 ||
+      settings.height > 16384)
+    throw InputError("trace size " + std::to_string(settings.width) + "x" +
+                     std::to_string(settings.height) + ": expected 1..16384 on each side");
+  checkSamplesPerPixel(settings.samplesPerPixel);
+  const uint32_t grid = uint32_t(std::lround(std::sqrt(double(settings.samplesPerPixel))));
+  const CameraRays camera(scene_.camera, settings.width, settings.height);
+  TraceResult result{ImageRgba(settings.width, settings.height), {}};
+  uint32_t threadCount = settings.threads ? settings.threads : std::thread::hardware_concurrency();
+  threadCount = std::clamp<uint32_t>(threadCount, 1, settings.height);
+  std::vector<TraceStats> perThread(threadCount);
+  std::atomic<uint32_t> nextRow{0}, rowsDone{0};
+  // Rows are handed out dynamically, but each pixel depends only on its own
+  // coordinates: the image is the same for any thread count and order.
+  auto work = [&](TraceStats& stats, bool reports) {
+    uint32_t reported = 0;  // tenths
+    for (uint32_t y = nextRow++; y < settings.height; y = nextRow++) {
+      for (uint32_t x = 0; x < settings.width; ++x)
+        result.image.set(x, y, glm::vec4(tracePixel(camera, x, y, grid, settings, stats), 1.0f));
+      const uint32_t tenths = 10 * ++rowsDone / settings.height;
+      if (reports && settings.progress && tenths > reported && tenths < 10)
+        settings.progress(float(reported = tenths) / 10.0f);
+    }
+  };
+  std::vector<std::thread> workers;
+  for (uint32_t i = 1; i < threadCount; ++i)
+    workers.emplace_back(work, std::ref(perThread[i]), false);
+  work(perThread[0], true);
+  for (std::thread& worker : workers) worker.join();
+  if (settings.progress) settings.progress(1.0f);
+  for (const TraceStats& stats : perThread) result.stats += stats;
+  return result;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,74 @@
+#pragma once
+// A scene's geometry on the device (one vertex and one index buffer for all
+// meshes) and the per-frame data the shaders read, built from the scene and
+// the camera.
+#include <compare>
+#include <vector>
+
+#include "core/vulkan/resources.h"
+#include "core/scene/scene.h"
+#include "interface.h"
+
+namespace shadelab {
+
+// How normals go to eye space. Only the inverse transpose keeps them
+// perpendicular to the surface under non-uniform scale; the plain
+// model-view is the classic mistake, kept so tests can show what it breaks.
+enum class NormalTransform { InverseTranspose, ModelView };
+
+struct DrawItem {
+  uint32_t firstIndex = 0;
+  uint32_t indexCount = 0;
+  int32_t vertexOffset = 0;
+  gpu::DrawConstants constants{};  // material and object index, pushed per draw
+  bool textured = false;  // the material has a texture: drawn by the textured pipelines
+  VkDescriptorSet materialSet = VK_NULL_HANDLE;  // set 1 when textured (passes/scene_textures)
+  Bounds worldBounds;        // the mesh's box, transformed: what culling tests
+  bool transparent = false;  // blended after the opaque draws, back to front
+};
+
+// How many lights of each kind the shaders loop over: specialization
+// constants, so a pipeline is built per layout (point lights + directional
+// lights <= MAX_LIGHTS).
+struct LightLayout {
+  uint32_t point = 0;
+  uint32_t directional = 0;
+  bool attenuated = false;  // some point light has attenuation other than (1, 0, 0)
+  uint32_t total() const { return point + directional; }
+  auto operator<=>(const LightLayout&) const = default;
+};
+
+// The first MAX_LIGHTS lights of the scene, as makeFrameData orders them.
+LightLayout lightLayoutOf(const Scene& scene);
+
+struct GpuScene {
+  Buffer vertices;
+  Buffer indices;
+  std::vector<DrawItem> draws;
+  uint64_t triangles = 0;
+  LightLayout lights;
+  bool anyTransparent = false;
+};
+
+// Objects whose material asks for a UV projection draw a copy of their mesh
+// with projected UVs; meshes without tangents get computed ones (mesh.h).
+GpuScene uploadScene(const Context& context, const Scene& scene);
+
+// The draws of one frame, the one place they are filtered and ordered:
+// draws whose box is outside the view frustum are dropped (counted in
+// `culled`), then the opaque ones in scene order, then the transparent ones
+// back to front by the eye-space depth of their box's centre (the painter's
+// algorithm; blending is not commutative).
+std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
+                                   const glm::mat4& projection, bool cull, uint32_t& culled);
+
+// Lights move to eye space, so the shaders light with V = -position; the
+// first MAX_LIGHTS scene lights go in, point lights first, then directional.
+gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view, const glm::mat4& projection);
+// Model-view and its normal matrix (inverse transpose) per object.
+// Materials travel with the draws (DrawItem::constants).
+std::vector<gpu::ObjectData> makeObjectData(
+    const Scene& scene, const glm::mat4& view,
+    NormalTransform normals = NormalTransform::InverseTranspose);
+
+}  // namespace shadelab

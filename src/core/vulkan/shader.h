@@ -1,0 +1,17 @@
+#pragma once
+#include <span>
+#include <string_view>
+
+#include "core/vulkan/resources.h"
+
+namespace shadelab {
+
+// SPIR-V compiled at build time and linked into the binary (cmake/shaders.cmake),
+// looked up by source file name, e.g. "forward.vert". Empty if unknown.
+std::span<const uint32_t> embeddedSpirv(std::string_view name);
+
+ShaderModule createShaderModule(VkDevice device, std::span<const uint32_t> spirv);
+// Asserts the shader exists: a missing name is a build error, not user input.
+ShaderModule loadShader(VkDevice device, std::string_view name);
+
+}  // namespace shadelab

@@ -1,0 +1,49 @@
+#include "core/vulkan/vk_check.h"
+
+#include <string>
+
+#include "core/base/errors.h"
+
+namespace shadelab {
+
+const char* vkResultName(VkResult result) {
+  switch (result) {
+#define SHADELAB_RESULT(name) \
+  case name:                  \
+    return #name;
+    SHADELAB_RESULT(VK_SUCCESS)
+    SHADELAB_RESULT(VK_NOT_READY)
+    SHADELAB_RESULT(VK_TIMEOUT)
+    SHADELAB_RESULT(VK_EVENT_SET)
+    SHADELAB_RESULT(VK_EVENT_RESET)
+    SHADELAB_RESULT(VK_INCOMPLETE)
+    SHADELAB_RESULT(VK_ERROR_OUT_OF_HOST_MEMORY)
+    SHADELAB_RESULT(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+    SHADELAB_RESULT(VK_ERROR_INITIALIZATION_FAILED)
+    SHADELAB_RESULT(VK_ERROR_DEVICE_LOST)
+    SHADELAB_RESULT(VK_ERROR_MEMORY_MAP_FAILED)
+    SHADELAB_RESULT(VK_ERROR_LAYER_NOT_PRESENT)
+    SHADELAB_RESULT(VK_ERROR_EXTENSION_NOT_PRESENT)
+    SHADELAB_RESULT(VK_ERROR_FEATURE_NOT_PRESENT)
+    SHADELAB_RESULT(VK_ERROR_INCOMPATIBLE_DRIVER)
+    SHADELAB_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
+    SHADELAB_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED)
+    SHADELAB_RESULT(VK_ERROR_FRAGMENTED_POOL)
+    SHADELAB_RESULT(VK_ERROR_UNKNOWN)
+    SHADELAB_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+    SHADELAB_RESULT(VK_ERROR_SURFACE_LOST_KHR)
+    SHADELAB_RESULT(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
+    SHADELAB_RESULT(VK_SUBOPTIMAL_KHR)
+    SHADELAB_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
+#undef SHADELAB_RESULT
+    default:
+      return "VK_RESULT_UNKNOWN";
+  }
+}
+
+void vkCheckFailed(VkResult result, const char* call, const char* file, int line) {
+  throw VulkanError(std::string(call) + " returned " + vkResultName(result) + " at " + file + ":" +
+                    std::to_string(line));
+}
+
+}  // namespace shadelab

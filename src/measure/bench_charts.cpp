@@ -1,0 +1,123 @@
+#include "measure/bench_charts.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <tuple>
+
+#include "core/metrics/chart.h"
+
+namespace shadelab {
+namespace {
+
+constexpr uint32_t kChartWidth = 1100, kChartHeight = 640;
+
+AxisScale scaleFor(double low, double high) {
+  return low > 0.0 && high / low > 8.0 ? AxisScale::Log : AxisScale::Linear;
+}
+
+}  // namespace
+
+std::vector<size_t> chartedResults(const std::vector<BenchResult>& results, size_t metricIndex) {
+  std::vector<size_t> indices;
+  for (size_t i = 0; i < results.size(); ++i)
+    if (results[i].point.model != ShadingModel::Unlit && metricIndex < results[i].errors.size())
+      indices.push_back(i);
+  return indices;
+}
+
+std::vector<size_t> benchParetoFront(const std::vector<BenchResult>& results,
+                                     const std::vector<size_t>& indices, size_t metricIndex,
+                                     const ErrorMetric& metric) {
+  std::vector<CostError> points;
+  for (size_t i : indices)
+    points.push_back({results[i].deviceMedianMs, metric.badness(results[i].errors[metricIndex])});
+  std::vector<size_t> front;
+  for (size_t f : paretoFront(points)) front.push_back(indices[f]);
+  return front;
+}
+
+ImageU8 errorTimeChart(const std::vector<BenchResult>& results, size_t metricIndex,
+                       const ErrorMetric& metric, const std::string& title) {
+  std::vector<size_t> indices = chartedResults(results, metricIndex);
+  std::vector<size_t> front = benchParetoFront(results, indices, metricIndex, metric);
+  Chart chart;
+  chart.title = title;
+  chart.subtitle =
+      "each point a setting (model, tessellation t, MSAA); ring and line: the Pareto "
+      "front, nothing is both faster and more accurate";
+  chart.y = {metric.description, AxisScale::Linear};
+  // The front is listed first so that its points win the contested label spots.
+  ChartSeries frontSeries{"Pareto front", glm::vec3(0.1f), {}, true, Marker::Ring};
+  for (size_t i : front)
+    frontSeries.points.push_back({results[i].deviceMedianMs, results[i].errors[metricIndex],
+                                  benchPointName(results[i].point)});
+  chart.series.push_back(frontSeries);
+  std::map<ShadingModel, ChartSeries> byModel;
+  double lowMs = 1e300, highMs = 0.0;
+  for (size_t i : indices) {
+    const BenchResult& r = results[i];
+    lowMs = std::min(lowMs, r.deviceMedianMs), highMs = std::max(highMs, r.deviceMedianMs);
+    ChartSeries& series = byModel[r.point.model];
+    series.name = shadingModelName(r.point.model);
+    series.color = chartColor(size_t(r.point.model));
+    bool onFront = std::find(front.begin(), front.end(), i) != front.end();
+    series.points.push_back(
+        {r.deviceMedianMs, r.errors[metricIndex], onFront ? "" : benchPointName(r.point)});
+  }
+  for (auto& [model, series] : byModel) chart.series.push_back(series);
+  AxisScale scale = indices.empty() ? AxisScale::Linear : scaleFor(lowMs, highMs);
+  chart.x = {scale == AxisScale::Log ? "device frame time, median ms (log)"
+                                     : "device frame time, median ms",
+             scale};
+  return drawChart(chart, kChartWidth, kChartHeight);
+}
+
+ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metricIndex,
+                           const ErrorMetric& metric, const std::string& title) {
+  Chart chart;
+  chart.title = title;
+  chart.subtitle =
+      "one line per shading model and MSAA (rings: multisampled) through the tessellation "
+      "sweep (t = tessellation factor)";
+  chart.y = {metric.description, AxisScale::Linear};
+  // One line per (model, samples, filter): the tessellation sweep runs along it.
+  std::map<std::tuple<ShadingModel, uint32_t, std::string>, std::vector<size_t>> lines;
+  double lowTriangles = 1e300, highTriangles = 0.0;
+  for (size_t i : chartedResults(results, metricIndex)) {
+    const BenchPoint& point = results[i].point;
+    lines[{point.model, point.msaaSamples, point.filter ? benchFilterName(point.filter) : ""}]
+        .push_back(i);
+    lowTriangles = std::min(lowTriangles, double(results[i].triangles));
+    highTriangles = std::max(highTriangles, double(results[i].triangles));
+  }
+  std::vector<uint64_t> labelled;  // each tessellation's column is labelled once
+  for (auto& [key, members] : lines) {
+    std::sort(members.begin(), members.end(),
+              [&](size_t a, size_t b) { return results[a].triangles < results[b].triangles; });
+    ChartSeries series;
+    const auto& [model, samples, filter] = key;
+    series.name = std::string(shadingModelName(model)) + " " + std::to_string(samples) + "x" +
+                  (filter.empty() ? "" : " " + filter);
+    // Colours by model as in the time chart; multisampled lines get rings.
+    series.color = chartColor(size_t(model));
+    series.marker = samples > 1 ? Marker::Ring : Marker::Dot;
+    series.markerSize = samples > 1 ? 2.0 : 4.0;
+    series.connect = true;
+    for (size_t i : members) {
+      char label[24] = "";
+      if (std::find(labelled.begin(), labelled.end(), results[i].triangles) == labelled.end()) {
+        std::snprintf(label, sizeof label, "t%g", results[i].point.tessellation);
+        labelled.push_back(results[i].triangles);
+      }
+      series.points.push_back(
+          {double(results[i].triangles), results[i].errors[metricIndex], label});
+    }
+    chart.series.push_back(series);
+  }
+  AxisScale scale = lines.empty() ? AxisScale::Linear : scaleFor(lowTriangles, highTriangles);
+  chart.x = {scale == AxisScale::Log ? "triangles per frame (log)" : "triangles per frame", scale};
+  return drawChart(chart, kChartWidth, kChartHeight);
+}
+
+}  // namespace shadelab

@@ -1,0 +1,27 @@
+#pragma once
+// The benchmark's charts: error against frame time with the Pareto front
+// marked, and error against triangle count across the tessellation sweep.
+#include <vector>
+
+#include "core/metrics/error_metric.h"
+#include "core/base/image.h"
+#include "core/metrics/pareto.h"
+#include "measure/benchmark.h"
+
+namespace shadelab {
+
+// The results a quality choice or chart considers: every lit model (unlit is
+// the timing floor, not a way to render the scene) with an error measured.
+std::vector<size_t> chartedResults(const std::vector<BenchResult>& results, size_t metricIndex);
+// Pareto front (device median ms against the metric's badness) over `indices`;
+// returns indices into `results`, cheapest first.
+std::vector<size_t> benchParetoFront(const std::vector<BenchResult>& results,
+                                     const std::vector<size_t>& indices, size_t metricIndex,
+                                     const ErrorMetric& metric);
+
+ImageU8 errorTimeChart(const std::vector<BenchResult>& results, size_t metricIndex,
+                       const ErrorMetric& metric, const std::string& title);
+ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metricIndex,
+                           const ErrorMetric& metric, const std::string& title);
+
+}  // namespace shadelab

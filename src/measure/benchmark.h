@@ -1,0 +1,89 @@
+#pragma once
+// The speed-against-accuracy measurement behind `shadelab bench`: one
+// renderer, one scene, a list of settings, each measured over many frames in
+// several interleaved rounds (A B C A B C ...) so that slow spells of a
+// shared machine fall on every setting alike rather than on whichever ran at
+// the time; and each setting's image measured against a reference with the
+// chosen error metrics.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/metrics/error_metric.h"
+#include "core/scene/scene.h"
+#include "core/scene/shading.h"
+#include "measure/reference.h"
+#include "passes/renderer.h"
+
+namespace shadelab {
+
+// One setting. A new axis is a field here, a list in BenchAxes, a loop in
+// benchPoints() and a column in benchCsv().
+struct BenchPoint {
+  ShadingModel model = ShadingModel::Phong;
+  float tessellation = 1.0f;  // Scene::retessellate factor
+  uint32_t msaaSamples = 1;
+  std::optional<TextureFilter> filter;  // overrides every sampler; none: the materials' own
+};
+
+// The sweep: every combination, models varying fastest.
+struct BenchAxes {
+  std::vector<ShadingModel> models;
+  std::vector<float> tessellations{1.0f};
+  std::vector<uint32_t> msaa{1};
+  std::vector<std::optional<TextureFilter>> filters{std::nullopt};
+};
+std::vector<BenchPoint> benchPoints(const BenchAxes& axes);
+std::string benchPointName(const BenchPoint& point);  // "phong t2 4x", "phong t2 4x nearest"
+// "material" for no override, else the filter's name.
+std::string benchFilterName(const std::optional<TextureFilter>& filter);
+
+struct BenchOptions {
+  uint32_t width = 1280;
+  uint32_t height = 720;
+  uint32_t frames = 120;  // per round and point; the first tenth is warm-up
+  uint32_t rounds = 3;
+  // The error of each point's image against the reference, per metric; no
+  // reference (empty render): no errors measured.
+  Reference reference;
+  std::vector<ErrorMetric> metrics;
+};
+
+struct BenchResult {
+  BenchPoint point;
+  uint64_t triangles = 0;
+  size_t frames = 0;                               // steady frames measured, over all rounds
+  double deviceMedianMs = 0.0, deviceP95Ms = 0.0;  // GPU timestamps around each frame
+  double wallMedianMs = 0.0, wallP95Ms = 0.0;      // between successive frame completions
+  // Memory while this point ran: the device memory shadelab had allocated
+  // (RenderStats::deviceMemoryBytes), and the process's peak resident set
+  // (VmHWM, reset before each run where Linux allows), which on lavapipe also
+  // holds the driver's vertex and tile buffers. The largest over all rounds.
+  uint64_t deviceMemoryBytes = 0;
+  uint64_t peakResidentBytes = 0;
+  std::vector<double> errors;  // per BenchOptions::metrics, against the reference
+};
+
+// `progress` receives one line per measured run. Throws InputError for
+// impossible settings (as renderToImage does).
+std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
+                                      const std::vector<BenchPoint>& points,
+                                      const BenchOptions& options,
+                                      const std::function<void(const std::string&)>& progress);
+
+// One header line and one line per result.
+std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions& options,
+                     const std::string& sceneName);
+
+// A results.csv read back: the columns by name, each row's values as text.
+struct BenchTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+  // Index of a column; throws InputError naming `source` when it is missing.
+  size_t column(const std::string& name, const std::string& source) const;
+};
+// Throws InputError naming `source` for a malformed table.
+BenchTable parseBenchCsv(const std::string& text, const std::string& source);
+
+}  // namespace shadelab

@@ -1,0 +1,50 @@
+#include "measure/reference.h"
+
+#include "core/base/errors.h"
+#include "core/trace/raytracer.h"
+
+namespace shadelab {
+namespace {
+
+const std::vector<Reference>& references() {
+  static const std::vector<Reference> table = {
+      traceReference(4, true),
+      {"raster", "Phong, 4x tessellation, 4x MSAA",
+       [](Renderer& renderer, const Scene& scene, uint32_t width, uint32_t height) {
+         Scene fine = scene;
+         fine.retessellate(4.0f);
+         RenderSettings settings{width, height, ShadingModel::Phong};
+         settings.msaaSamples = 4;
+         return renderer.renderToImage(fine, settings).image;
+       }},
+  };
+  return table;
+}
+
+}  // namespace
+
+Reference traceReference(uint32_t samplesPerPixel, bool shadows) {
+  return {"trace",
+          "Whitted ray tracer, " + std::to_string(samplesPerPixel) + " spp" +
+              (shadows ? "" : ", no shadows"),
+          [samplesPerPixel, shadows](Renderer&, const Scene& scene, uint32_t width,
+                                     uint32_t height) {
+            TraceSettings settings;
+            settings.width = width;
+            settings.height = height;
+            settings.samplesPerPixel = samplesPerPixel;
+            settings.shadows = shadows;
+            return RayTracer(scene).render(settings).image;
+          }};
+}
+
+const Reference& findReference(const std::string& name, const std::string& option) {
+  for (const Reference& reference : references())
+    if (reference.name == name) return reference;
+  std::string names;
+  for (const Reference& reference : references())
+    names += (names.empty() ? "" : ", ") + reference.name;
+  throw InputError(option + " '" + name + "': expected " + names);
+}
+
+}  // namespace shadelab

@@ -1,0 +1,107 @@
+#include "measure/zfight.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "core/metrics/chart.h"
+
+namespace shadelab {
+namespace {
+
+const char* projectionName(Projection projection) {
+  return projection == Projection::Orthographic ? "orthographic" : "perspective";
+}
+
+}  // namespace
+
+ZFightPixel classifyZFightPixel(const ImageRgba& image, size_t p) {
+  // Unlit, the planes are pure red (near) and pure blue (far) on black; edge
+  // pixels blend with the background, so compare the two channels.
+  float nearChannel = image.pixels[p * 4 + 0], farChannel = image.pixels[p * 4 + 2];
+  if (nearChannel + farChannel < 0.5f) return ZFightPixel::Background;
+  return farChannel > nearChannel ? ZFightPixel::FarPlane : ZFightPixel::NearPlane;
+}
+
+ZFightMeasurement measureZFight(Renderer& renderer, DepthMode depth, Projection projection,
+                                float near, uint32_t width, uint32_t height) {
+  Scene farFirst = zfightScene(projection, near);
+  Scene farLast = farFirst;
+  std::reverse(farLast.objects.begin(), farLast.objects.end());
+  RenderSettings settings{width, height, ShadingModel::Unlit};
+  settings.depth = depth;
+  ImageRgba a = renderer.renderToImage(farFirst, settings).image;
+  ImageRgba b = renderer.renderToImage(farLast, settings).image;
+  ZFightMeasurement result{depth, projection, near};
+  for (size_t p = 0; p < size_t(width) * height; ++p) {
+    ZFightPixel first = classifyZFightPixel(a, p), last = classifyZFightPixel(b, p);
+    if (first == ZFightPixel::Background && last == ZFightPixel::Background) continue;
+    ++result.coveredPixels;
+    if (first == ZFightPixel::FarPlane || last == ZFightPixel::FarPlane) ++result.wrongPixels;
+  }
+  return result;
+}
+
+std::vector<ZFightMeasurement> runZFightSweep(
+    Renderer& renderer, const std::vector<float>& nearPlanes, uint32_t width, uint32_t height,
+    const std::function<void(const std::string&)>& progress) {
+  std::vector<ZFightMeasurement> results;
+  for (Projection projection : {Projection::Perspective, Projection::Orthographic})
+    for (DepthMode depth : kDepthModes)
+      for (float near : nearPlanes) {
+        results.push_back(measureZFight(renderer, depth, projection, near, width, height));
+        char line[160];
+        std::snprintf(line, sizeof line, "%-12s %-8s near %-7g wrong %6.2f%% of %llu pixels",
+                      projectionName(projection), std::string(depthModeName(depth)).c_str(), near,
+                      100.0 * results.back().wrongFraction(),
+                      static_cast<unsigned long long>(results.back().coveredPixels));
+        progress(line);
+      }
+  return results;
+}
+
+std::string zfightCsv(const std::vector<ZFightMeasurement>& measurements, uint32_t width,
+                      uint32_t height) {
+  std::ostringstream csv;
+  csv << "projection,depth,format,near,far,gap,width,height,covered_pixels,wrong_pixels,"
+         "wrong_fraction\n";
+  for (const ZFightMeasurement& m : measurements) {
+    Scene scene = zfightScene(m.projection, m.near);
+    csv << projectionName(m.projection) << ',' << depthModeName(m.depth) << ','
+        << depthFormatName(m.depth) << ',' << m.near << ',' << scene.camera.far << ',' << kZFightGap
+        << ',' << width << ',' << height << ',' << m.coveredPixels << ',' << m.wrongPixels << ','
+        << m.wrongFraction() << '\n';
+  }
+  return csv.str();
+}
+
+ImageU8 zfightChart(const std::vector<ZFightMeasurement>& measurements) {
+  std::vector<Chart> panels;
+  for (Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    Chart chart;
+    chart.title = std::string("Z-fighting, ") + projectionName(projection) + " projection";
+    char subtitle[96];
+    std::snprintf(subtitle, sizeof subtitle,
+                  "two planes %g apart, 80-230 units away; far plane at %g", kZFightGap,
+                  zfightScene(projection, 1.0f).camera.far);
+    chart.subtitle = subtitle;
+    chart.x = {"near plane distance (log)", AxisScale::Log};
+    chart.y = {"pixels where the farther plane wins (%)", AxisScale::Linear, 0.0, 100.0};
+    for (DepthMode depth : kDepthModes) {
+      ChartSeries series{
+          depth == DepthMode::ReversedZ ? "reversed-Z d32f" : std::string(depthModeName(depth)),
+          chartColor(size_t(depth)),
+          {},
+          true,
+          Marker::Dot};
+      for (const ZFightMeasurement& m : measurements)
+        if (m.projection == projection && m.depth == depth)
+          series.points.push_back({m.near, 100.0 * m.wrongFraction(), ""});
+      chart.series.push_back(std::move(series));
+    }
+    panels.push_back(std::move(chart));
+  }
+  return drawChartRow(panels, 760, 440);
+}
+
+}  // namespace shadelab

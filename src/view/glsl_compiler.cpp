@@ -1,0 +1,114 @@
+#include "view/glsl_compiler.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+
+namespace shadelab {
+namespace {
+
+bool readText(const std::filesystem::path& path, std::string& text) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return false;
+  std::stringstream stream;
+  stream << file.rdbuf();
+  text = stream.str();
+  return true;
+}
+
+// Resolves `#include "x"` against one folder, as the build's -I does.
+class FolderIncluder : public glslang::TShader::Includer {
+ public:
+  explicit FolderIncluder(std::filesystem::path directory) : directory_(std::move(directory)) {}
+
+  IncludeResult* includeLocal(const char* headerName, const char*, size_t) override {
+    auto text = std::make_unique<std::string>();
+    std::filesystem::path path = directory_ / headerName;
+    if (!readText(path, *text)) {
+      *text = "cannot open include file " + path.string();
+      return keep(std::move(text), "");
+    }
+    return keep(std::move(text), path.string());
+  }
+  IncludeResult* includeSystem(const char* headerName, const char* includer,
+                               size_t depth) override {
+    return includeLocal(headerName, includer, depth);
+  }
+  void releaseInclude(IncludeResult* result) override {
+    if (!result) return;
+    texts_.erase(result);
+    delete result;
+  }
+
+ private:
+  IncludeResult* keep(std::unique_ptr<std::string> text, const std::string& resolved) {
+    auto* result = new IncludeResult(resolved, text->data(), text->size(), nullptr);
+    texts_[result] = std::move(text);
+    return result;
+  }
+  std::filesystem::path directory_;
+  std::map<IncludeResult*, std::unique_ptr<std::string>> texts_;
+};
+
+bool stageOf(const std::string& name, EShLanguage& stage) {
+  static const std::map<std::string, EShLanguage> stages = {
+      {".vert", EShLangVertex},  {".geom", EShLangGeometry},    {".frag", EShLangFragment},
+      {".comp", EShLangCompute}, {".tesc", EShLangTessControl}, {".tese", EShLangTessEvaluation}};
+  auto found = stages.find(std::filesystem::path(name).extension().string());
+  if (found == stages.end()) return false;
+  stage = found->second;
+  return true;
+}
+
+}  // namespace
+
+GlslCompileResult compileGlslFile(const std::filesystem::path& directory, const std::string& name) {
+  // glslang keeps process-wide tables: initialise once, never finalise.
+  static std::once_flag initialised;
+  std::call_once(initialised, [] { glslang::InitializeProcess(); });
+
+  GlslCompileResult result;
+  EShLanguage stage;
+  if (!stageOf(name, stage)) {
+    result.log = name + ": unknown shader stage (expected .vert .geom .frag .comp .tesc .tese)";
+    return result;
+  }
+  std::filesystem::path path = directory / name;
+  std::string source;
+  if (!readText(path, source)) {
+    result.log = path.string() + ": cannot read the file";
+    return result;
+  }
+  glslang::TShader shader(stage);
+  const char* text = source.c_str();
+  std::string pathName = path.string();
+  const char* fileName = pathName.c_str();
+  shader.setStringsWithLengthsAndNames(&text, nullptr, &fileName, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
+  FolderIncluder includer(directory);
+  auto messages = EShMessages(EShMsgSpvRules | EShMsgVulkanRules);
+  if (!shader.parse(GetDefaultResources(), 100, false, messages, includer)) {
+    result.log = shader.getInfoLog();
+    return result;
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    result.log = program.getInfoLog();
+    return result;
+  }
+  glslang::SpvOptions options;
+  options.disableOptimizer = true;
+  glslang::GlslangToSpv(*program.getIntermediate(stage), result.spirv, &options);
+  return result;
+}
+
+}  // namespace shadelab
