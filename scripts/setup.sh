@@ -8,13 +8,13 @@ cd "$(dirname "$0")/.."
 
 preset="${1:-release}"
 packages=(
-  build-essential cmake pkg-config
-  mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers vulkan-tools
-  glslang-tools glslang-dev spirv-tools
+  build-essential cmake pkg-config python3
+  mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers
+  glslang-tools glslang-dev
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev openimageio-tools
   libimgui-dev libcli11-dev nlohmann-json3-dev libstb-dev libmeshoptimizer-dev
-  libgtest-dev libbenchmark-dev
-  fonts-dejavu-core xvfb xauth imagemagick python3-matplotlib
+  libgtest-dev clang-format
+  fonts-dejavu-core xvfb xauth
 )
 
 missing=()

@@ -174,9 +174,10 @@ TEST(QualityChoice, RowsOverridingTheTextureFilterAreNotCandidates) {
 }
 
 TEST(DepthModes, NamesFormatsAndReversedZState) {
-  EXPECT_EQ(depthModeNames(), (std::vector<std::string>{"d16", "d24", "d32f", "reversed"}));
-  EXPECT_EQ(parseDepthMode("reversed"), DepthMode::ReversedZ);
-  EXPECT_FALSE(parseDepthMode("d8").has_value());
+  EXPECT_EQ(namesOf(kDepthModeNames),
+            (std::vector<std::string_view>{"d16", "d24", "d32f", "reversed"}));
+  EXPECT_EQ(valueOf(kDepthModeNames, "reversed"), DepthMode::ReversedZ);
+  EXPECT_FALSE(valueOf(kDepthModeNames, "d8").has_value());
   EXPECT_EQ(depthFormat(DepthMode::D24), VK_FORMAT_X8_D24_UNORM_PACK32);
   EXPECT_EQ(depthFormat(DepthMode::ReversedZ), VK_FORMAT_D32_SFLOAT);
   EXPECT_EQ(depthClearValue(DepthMode::ReversedZ), 0.0f);

@@ -211,11 +211,21 @@ TEST_F(Cli, EnvOnAndOffRenderTheStudioScene) {
   EXPECT_NE(readText(out("on.png")), readText(out("off.png")));
 }
 
-TEST_F(Cli, BadEnvValueIsAUsageError) {
-  CommandResult r = run("render env -o " + out("a.png") + " --env maybe");
-  EXPECT_EQ(r.exitCode, 2) << r.output;
-  EXPECT_NE(r.output.find("--env"), std::string::npos) << r.output;
-  EXPECT_EQ(filesLeft(), 0u);
+// Every on/off switch of every command reads the same name table: one
+// message, one exit code.
+TEST_F(Cli, BadSwitchValuesGetOneMessage) {
+  for (std::string command : {"render env -o " + out("a.png") + " --env maybe",
+                              "render bump -o " + out("a.png") + " --bump maybe",
+                              "trace -o " + out("a.png") + " --size 8x8 --shadows maybe",
+                              "compare -o " + out("a.png") + " --size 8x8 --shadows maybe"}) {
+    CommandResult r = run(command);
+    EXPECT_EQ(r.exitCode, 2) << command << "\n" << r.output;
+    std::string option = command.substr(command.rfind(" --") + 1);
+    option = option.substr(0, option.find(' '));
+    EXPECT_NE(r.output.find(option + " 'maybe': expected one of on, off"), std::string::npos)
+        << command << "\n" << r.output;
+    EXPECT_EQ(filesLeft(), 0u) << command;
+  }
 }
 
 TEST_F(Cli, TessellationOutOfRangeIsAUsageError) {

@@ -181,7 +181,7 @@ TEST_F(EnvironmentShading, EveryDepthModeDrawsTheSameSkybox) {
   RenderSettings off = settings;
   off.environment = false;
   ImageU8 background = render(scene, off);
-  for (DepthMode mode : kDepthModes) {
+  for (DepthMode mode : valuesOf(kDepthModeNames)) {
     settings.depth = mode;
     ImageU8 image = render(scene, settings);
     EXPECT_TRUE(matchesImage(reference, image)) << depthModeName(mode);

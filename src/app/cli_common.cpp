@@ -22,25 +22,11 @@ Size parseSize(const std::string& text, const std::string& option) {
   return size;
 }
 
-ShadingModel parseShadingModelOption(const std::string& text, const std::string& option) {
-  if (std::optional<ShadingModel> model = parseShadingModel(text)) return *model;
-  std::string names;
-  for (const std::string& name : shadingModelNames()) names += (names.empty() ? "" : ", ") + name;
-  throw InputError(option + " '" + text + "': expected one of " + names);
-}
-
-DepthMode parseDepthModeOption(const std::string& text, const std::string& option) {
-  if (std::optional<DepthMode> mode = parseDepthMode(text)) return *mode;
-  std::string names;
-  for (const std::string& name : depthModeNames()) names += (names.empty() ? "" : ", ") + name;
-  throw InputError(option + " '" + text + "': expected one of " + names);
-}
-
 std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option) {
   std::vector<ShadingModel> models;
   std::stringstream stream(text);
   std::string item;
-  while (std::getline(stream, item, ',')) models.push_back(parseShadingModelOption(item, option));
+  while (std::getline(stream, item, ',')) models.push_back(parseNamed(kShadingModelNames, item, option));
   if (models.empty()) throw InputError(option + " '" + text + "': expected at least one model");
   return models;
 }

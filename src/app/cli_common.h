@@ -22,8 +22,15 @@ Size parseSize(const std::string& text, const std::string& option);
 
 // "flat,phong" -> models, in order; throws InputError naming a bad entry.
 std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option);
-ShadingModel parseShadingModelOption(const std::string& text, const std::string& option);
-DepthMode parseDepthModeOption(const std::string& text, const std::string& option);
+
+// An option's help text ending in the names its table accepts:
+// "Depth buffer: d16, d24, d32f, reversed". Its value is read with
+// parseNamed(table, text, "--option") (names.h), so every bad value gets one
+// kind of message and exit code.
+template <typename E, size_t N>
+std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
+  return what + ": " + joinNames(namesOf(table));
+}
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.

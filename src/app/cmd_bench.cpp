@@ -65,11 +65,11 @@ std::vector<std::optional<TextureFilter>> parseFilterList(const std::string& tex
   while (std::getline(stream, item, ',')) {
     if (item == "material") {
       filters.push_back(std::nullopt);
-    } else if (std::optional<TextureFilter> filter = parseTextureFilter(item)) {
+    } else if (std::optional<TextureFilter> filter = valueOf(kTextureFilterNames, item)) {
       filters.push_back(filter);
     } else {
-      throw InputError("--filters '" + item +
-                       "': expected material, nearest, bilinear, trilinear or aniso");
+      throw InputError("--filters '" + item + "': expected material or one of " +
+                       joinNames(namesOf(kTextureFilterNames)));
     }
   }
   if (filters.empty()) throw InputError("--filters '" + text + "': expected at least one filter");
@@ -133,14 +133,14 @@ int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& globa
 
   std::printf("pixels where the farther plane wins (%%), planes %g apart\n", kZFightGap);
   std::printf("%-13s %9s", "projection", "near");
-  for (DepthMode depth : kDepthModes)
+  for (DepthMode depth : valuesOf(kDepthModeNames))
     std::printf(" %9s", std::string(depthModeName(depth)).c_str());
   std::printf("\n");
   for (Projection projection : {Projection::Perspective, Projection::Orthographic})
     for (float near : options.nearPlanes) {
       std::printf("%-13s %9g",
-                  projection == Projection::Perspective ? "perspective" : "orthographic", near);
-      for (DepthMode depth : kDepthModes)
+                  std::string(nameOf(kProjectionNames, projection)).c_str(), near);
+      for (DepthMode depth : valuesOf(kDepthModeNames))
         for (const ZFightMeasurement& m : results)
           if (m.projection == projection && m.depth == depth && m.near == near)
             std::printf(" %9.2f", 100.0 * m.wrongFraction());

@@ -92,7 +92,8 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   checkSamplesPerPixel(options.samplesPerPixel);
   Reference reference = findReference(options.reference, "--reference");
   if (reference.name == "trace")
-    reference = traceReference(options.samplesPerPixel, options.shadows == "on");
+    reference = traceReference(options.samplesPerPixel,
+                               parseNamed(kOnOffNames, options.shadows, "--shadows"));
   std::filesystem::path sheetPath(options.output);
   if (sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
@@ -184,9 +185,9 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::Range(1u, 256u));
   command
       ->add_option("--shadows", options->shadows,
-                   "Shadows in the traced reference: on, or off (to compare shading alone)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"on", "off"}));
+                   namedHelp("Shadows in the traced reference (off: shading alone)",
+                             kOnOffNames))
+      ->capture_default_str();
   return [options, &global] { return runCompare(*options, global); };
 }
 

@@ -44,7 +44,7 @@ int runInfo(const GlobalOptions& global) {
               features.fillModeNonSolid ? "yes" : "no",
               features.pipelineStatisticsQuery ? "yes" : "no");
   std::string depthModes;
-  for (DepthMode mode : kDepthModes) {
+  for (DepthMode mode : valuesOf(kDepthModeNames)) {
     VkFormatProperties format;
     vkGetPhysicalDeviceFormatProperties(context->physicalDevice(), depthFormat(mode), &format);
     bool usable = format.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
@@ -55,7 +55,7 @@ int runInfo(const GlobalOptions& global) {
   std::printf("max image size:  %u\n", properties.limits.maxImageDimension2D);
   std::string scenes, models;
   for (const std::string& name : builtinSceneNames()) scenes += " " + name;
-  for (const std::string& name : shadingModelNames()) models += " " + name;
+  models = " " + joinNames(namesOf(kShadingModelNames), " ");
   std::printf("built-in scenes:%s\n", scenes.c_str());
   std::printf("shading models: %s\n", models.c_str());
   return finishWithValidation(*context, 0);

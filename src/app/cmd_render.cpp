@@ -43,15 +43,9 @@ struct RenderOptions {
 
 TextureOptions parseTextureOptions(const RenderOptions& options) {
   TextureOptions textures;
-  if (!options.filter.empty()) {
-    textures.filterOverride = parseTextureFilter(options.filter);
-    if (!textures.filterOverride)
-      throw InputError("--filter '" + options.filter +
-                       "': expected one of nearest, bilinear, trilinear, aniso");
-  }
-  if (options.bump != "on" && options.bump != "off")
-    throw InputError("--bump '" + options.bump + "': expected on or off");
-  textures.bump = options.bump == "on";
+  if (!options.filter.empty())
+    textures.filterOverride = parseNamed(kTextureFilterNames, options.filter, "--filter");
+  textures.bump = parseNamed(kOnOffNames, options.bump, "--bump");
   textures.mipTint = options.mipTint;
   return textures;
 }
@@ -141,8 +135,9 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   bool autoTessellation = options.tessellation == "auto";
   float factor = autoTessellation ? 1.0f : parseTessellationFactor(options.tessellation);
-  BenchPoint point{parseShadingModelOption(options.mode, "--mode"), factor, options.msaa};
-  DepthMode depth = parseDepthModeOption(options.depth, "--depth");
+  BenchPoint point{parseNamed(kShadingModelNames, options.mode, "--mode"), factor, options.msaa};
+  DepthMode depth = parseNamed(kDepthModeNames, options.depth, "--depth");
+  bool environment = parseNamed(kOnOffNames, options.environment, "--env");
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
   const Reference& reference = findReference(options.reference, "--reference");
   TextureOptions textures = parseTextureOptions(options);
@@ -182,7 +177,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     RenderSettings settings{size.width, size.height, point.model, options.frames};
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
-    settings.environment = options.environment == "on";
+    settings.environment = environment;
     settings.textures = textures;
     result = renderer.renderToImage(scene, settings);
   }
@@ -208,8 +203,8 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")
       ->capture_default_str();
   CLI::Option* mode = command->add_option(
-      "--mode", options->mode, "Shading model: flat, gouraud, phong, blinn-phong, "
-      "unlit (constant colour, the timing floor)")
+      "--mode", options->mode,
+      namedHelp("Shading model (unlit: constant colour, the timing floor)", kShadingModelNames))
       ->capture_default_str();
   command->add_option("--frames", options->frames,
                       "Frames to draw (2 in flight); above 1, prints frame-time statistics")
@@ -233,23 +228,24 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
   command->add_option("--env", options->environment,
-                      "Environment mapping (reflections, refraction, skybox) when the scene has "
-                      "an environment: on or off")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"on", "off"}));
+                      namedHelp("Environment mapping (reflections, refraction, skybox) when the "
+                                "scene has an environment",
+                                kOnOffNames))
+      ->capture_default_str();
   command->add_option("--filter", options->filter,
                       "Texture filter for every texture, overriding the materials' samplers: "
                       "nearest (base level, no mipmaps), bilinear (nearest mip level), "
                       "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
   command->add_option("--bump", options->bump,
-                      "Bump mapping (normal and height maps; Phong and Blinn-Phong only): on, off")
+                      namedHelp("Bump mapping (normal and height maps; Phong and Blinn-Phong only)",
+                                kOnOffNames))
       ->capture_default_str();
   command->add_flag("--mip-tint", options->mipTint,
                     "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
                     "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
   command->add_option("--depth", options->depth,
-                   "Depth buffer: d16 (D16_UNORM), d24 (X8_D24_UNORM_PACK32), d32f "
-                   "(D32_SFLOAT), reversed (D32_SFLOAT, near -> 1, far -> 0)")
+                   namedHelp("Depth buffer (reversed: D32_SFLOAT, near -> 1, far -> 0)",
+                             kDepthModeNames))
       ->capture_default_str();
   CLI::Option* quality =
       command

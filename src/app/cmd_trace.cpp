@@ -27,6 +27,7 @@ struct TraceOptions {
 int runTrace(const TraceOptions& options) {
   Size size = parseSize(options.size, "--size");
   checkSamplesPerPixel(options.samplesPerPixel);
+  bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   TraceSettings settings;
@@ -35,7 +36,7 @@ int runTrace(const TraceOptions& options) {
   settings.samplesPerPixel = options.samplesPerPixel;
   settings.maxDepth = options.depth;
   settings.threads = options.threads;
-  settings.shadows = options.shadows == "on";
+  settings.shadows = shadows;
   // Progress on a terminal only, so logs and pipes get just the summary.
   if (isatty(STDERR_FILENO))
     settings.progress = [](float fraction) {
@@ -92,9 +93,10 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
                    "Worker threads (0: one per hardware thread); the image does not depend on it")
       ->capture_default_str()
       ->check(CLI::Range(0u, 256u));
-  command->add_option("--shadows", options->shadows, "Shadow rays: on, or off (as the rasteriser)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"on", "off"}));
+  command
+      ->add_option("--shadows", options->shadows,
+                   namedHelp("Shadow rays (off: as the rasteriser)", kOnOffNames))
+      ->capture_default_str();
   return [options] { return runTrace(*options); };
 }
 

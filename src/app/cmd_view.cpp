@@ -30,9 +30,9 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   ViewerOptions viewer;
   viewer.presentMode = parsePresentMode(options.present);
-  viewer.initial.shadingModel = parseShadingModelOption(options.mode, "--mode");
+  viewer.initial.shadingModel = parseNamed(kShadingModelNames, options.mode, "--mode");
   viewer.initial.msaaSamples = options.msaa;
-  viewer.initial.depth = parseDepthModeOption(options.depth, "--depth");
+  viewer.initial.depth = parseNamed(kDepthModeNames, options.depth, "--depth");
   viewer.tessellation = options.tessellation;
   if (!options.script.empty())
     viewer.script = parseViewerScript(options.script, Viewer::keyNames());
@@ -75,8 +75,7 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command
       ->add_option("--mode", options->mode,
-                   "Initial shading model: flat, gouraud, phong, "
-                   "blinn-phong, unlit (keys 1-4 change it)")
+                   namedHelp("Initial shading model (keys 1-4 change it)", kShadingModelNames))
       ->capture_default_str();
   command
       ->add_option("--tess", options->tessellation,
@@ -86,7 +85,7 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
-  command->add_option("--depth", options->depth, "Depth buffer: d16, d24, d32f, reversed")
+  command->add_option("--depth", options->depth, namedHelp("Depth buffer", kDepthModeNames))
       ->capture_default_str();
   command->add_option("--script", options->script,
                       "Run the steps of FILE (key, frames, drag, scroll, resize, minimize, "

@@ -58,7 +58,7 @@ std::vector<QualityCandidate> candidatesFromBench(const BenchTable& table,
   std::vector<QualityCandidate> candidates;
   try {
     for (const std::vector<std::string>& row : table.rows) {
-      std::optional<ShadingModel> model = parseShadingModel(row[mode]);
+      std::optional<ShadingModel> model = valueOf(kShadingModelNames, row[mode]);
       if (row[scene] != sceneName || !model || *model == ShadingModel::Unlit ||
           std::stoul(row[samples]) != msaa || row[error].empty() || !ownFilter(row))
         continue;

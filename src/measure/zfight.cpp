@@ -10,7 +10,7 @@ namespace shadelab {
 namespace {
 
 const char* projectionName(Projection projection) {
-  return projection == Projection::Orthographic ? "orthographic" : "perspective";
+  return nameOf(kProjectionNames, projection).data();  // the table's names are literals
 }
 
 }  // namespace
@@ -47,7 +47,7 @@ std::vector<ZFightMeasurement> runZFightSweep(
     const std::function<void(const std::string&)>& progress) {
   std::vector<ZFightMeasurement> results;
   for (Projection projection : {Projection::Perspective, Projection::Orthographic})
-    for (DepthMode depth : kDepthModes)
+    for (DepthMode depth : valuesOf(kDepthModeNames))
       for (float near : nearPlanes) {
         results.push_back(measureZFight(renderer, depth, projection, near, width, height));
         char line[160];
@@ -87,7 +87,7 @@ ImageU8 zfightChart(const std::vector<ZFightMeasurement>& measurements) {
     chart.subtitle = subtitle;
     chart.x = {"near plane distance (log)", AxisScale::Log};
     chart.y = {"pixels where the farther plane wins (%)", AxisScale::Linear, 0.0, 100.0};
-    for (DepthMode depth : kDepthModes) {
+    for (DepthMode depth : valuesOf(kDepthModeNames)) {
       ChartSeries series{
           depth == DepthMode::ReversedZ ? "reversed-Z d32f" : std::string(depthModeName(depth)),
           chartColor(size_t(depth)),

@@ -20,11 +20,18 @@
 #include <string>
 
 #include "core/base/image.h"
+#include "core/base/names.h"
 #include "interface.h"
 
 namespace shadelab {
 
 enum class EnvironmentKind { None, Sky, Panorama, CubeFaces };
+inline constexpr NameTable<EnvironmentKind, 4> kEnvironmentKindNames = {{
+    {EnvironmentKind::None, "none"},
+    {EnvironmentKind::Sky, "sky"},
+    {EnvironmentKind::Panorama, "equirect"},
+    {EnvironmentKind::CubeFaces, "cube"},
+}};
 
 // Sky = a gradient zenith -> horizon -> ground, sqrt-shaped in the elevation,
 // plus a sun disc with a soft edge (its outer half).

@@ -79,20 +79,6 @@ HeightField proceduralHeight(const ProceduralTexture& desc) {
   return field;
 }
 
-const char* heightPatternName(HeightPattern pattern) {
-  switch (pattern) {
-    case HeightPattern::Checker:
-      return "checker";
-    case HeightPattern::Bricks:
-      return "bricks";
-    case HeightPattern::Dimples:
-      return "dimples";
-    case HeightPattern::Waves:
-      return "waves";
-  }
-  return "?";
-}
-
 glm::vec3 heightFieldNormal(const HeightField& field, int32_t x, int32_t y, float depth) {
   float dhdu = 0.5f * (field.at(x + 1, y) - field.at(x - 1, y));
   float dhdv = 0.5f * (field.at(x, y - 1) - field.at(x, y + 1));  // v runs up, toward row 0

@@ -16,6 +16,12 @@ enum class HeightPattern {
   Dimples,  // 1 on the flat, a smooth cosine dip to 0 at each cell's centre
   Waves,    // 0.5 + 0.25 (sin 2 pi u + sin 2 pi v): ripples along both axes
 };
+inline constexpr NameTable<HeightPattern, 4> kHeightPatternNames = {{
+    {HeightPattern::Checker, "checker"},
+    {HeightPattern::Bricks, "bricks"},
+    {HeightPattern::Dimples, "dimples"},
+    {HeightPattern::Waves, "waves"},
+}};
 
 struct ProceduralTexture {
   HeightPattern pattern = HeightPattern::Checker;
@@ -33,7 +39,10 @@ struct HeightField {
 };
 
 HeightField proceduralHeight(const ProceduralTexture& desc);
-const char* heightPatternName(HeightPattern pattern);
+// As a C string for messages (the table's names are literals).
+inline const char* heightPatternName(HeightPattern pattern) {
+  return nameOf(kHeightPatternNames, pattern).data();
+}
 
 // The tangent-space normal of a height field at a texel, from central
 // differences (wrapping): n = normalize(-depth dh/du, -depth dh/dv, 1), with u

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/base/names.h"
 #include "core/scene/environment.h"
 #include "core/scene/mesh.h"
 #include "core/scene/shape.h"
@@ -14,6 +15,11 @@
 namespace shadelab {
 
 enum class Projection { Perspective, Frustum, Orthographic };
+inline constexpr NameTable<Projection, 3> kProjectionNames = {{
+    {Projection::Perspective, "perspective"},
+    {Projection::Frustum, "frustum"},
+    {Projection::Orthographic, "orthographic"},
+}};
 
 struct Camera {
   glm::vec3 eye{0.0f, 2.0f, 6.0f};
@@ -33,6 +39,10 @@ struct Camera {
 };
 
 enum class LightType { Point, Directional };
+inline constexpr NameTable<LightType, 2> kLightTypeNames = {{
+    {LightType::Point, "point"},
+    {LightType::Directional, "directional"},
+}};
 
 struct Light {
   LightType type = LightType::Point;
@@ -44,7 +54,19 @@ struct Light {
 
 // Texture sampling, per texture slot of a material (glTF samplers map here).
 enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+inline constexpr NameTable<TextureWrap, 3> kTextureWrapNames = {{
+    {TextureWrap::Repeat, "repeat"},
+    {TextureWrap::ClampToEdge, "clamp_to_edge"},
+    {TextureWrap::MirroredRepeat, "mirrored_repeat"},
+}};
+// The --filter and JSON "filter" names.
 enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
+inline constexpr NameTable<TextureFilter, 4> kTextureFilterNames = {{
+    {TextureFilter::Nearest, "nearest"},
+    {TextureFilter::Bilinear, "bilinear"},
+    {TextureFilter::Trilinear, "trilinear"},
+    {TextureFilter::Anisotropic, "aniso"},
+}};
 struct SamplerDesc {
   TextureWrap wrapU = TextureWrap::Repeat;
   TextureWrap wrapV = TextureWrap::Repeat;
@@ -68,6 +90,13 @@ struct Texture {
 // Texture coordinates generated for a material instead of the mesh's own
 // (an S-mapping, for meshes without UVs): see core/scene/uv_mapping.h.
 enum class UvProjection { Mesh, Planar, Cylindrical, Spherical, Box };
+inline constexpr NameTable<UvProjection, 5> kUvProjectionNames = {{
+    {UvProjection::Mesh, "mesh"},
+    {UvProjection::Planar, "planar"},
+    {UvProjection::Cylindrical, "cylindrical"},
+    {UvProjection::Spherical, "spherical"},
+    {UvProjection::Box, "box"},
+}};
 
 // A material's use of one texture: an index into Scene::textures (-1: none).
 struct TextureSlot {

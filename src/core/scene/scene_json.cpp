@@ -196,7 +196,7 @@ Camera parseCamera(const Field& field) {
   if (auto f = field.optional("up")) camera.up = f->vec3();
   if (auto f = field.optional("projection"))
     camera.projection =
-        Projection(f->choice("projection", {"perspective", "frustum", "orthographic"}));
+        f->choose("projection", kProjectionNames);
   if (auto f = field.optional("fovy")) {
     camera.fovyDegrees = f->number();
     if (!(camera.fovyDegrees > 0.0f && camera.fovyDegrees < 180.0f))
@@ -225,7 +225,7 @@ glm::vec3 parseAttenuation(const Field& field) {
 Light parseLight(const Field& field) {
   Light light;
   if (auto f = field.optional("type"))
-    light.type = LightType(f->choice("light type", {"point", "directional"}));
+    light.type = f->choose("light type", kLightTypeNames);
   if (light.type == LightType::Point) {
     field.expectObject({"type", "position", "intensity", "attenuation"});
     light.position = field.required("position", "the point light's position [x, y, z]").vec3();
@@ -498,7 +498,7 @@ class ObjectBuilder {
     for (const auto& [name, value] : materials_) names.push_back(name);
     field.fail("unknown material " + describe(field.json()),
                names.empty() ? "a material defined in \"materials\" (there are none)"
-                             : "one of " + scene_json::joinNames(names));
+                             : "one of " + joinNames(names));
   }
 
   // The glTF's nodes continue this object's matrix stack; its own lights and

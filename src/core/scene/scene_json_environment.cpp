@@ -78,7 +78,7 @@ Environment parseEnvironment(const Field& field, const std::filesystem::path& fo
   Environment environment;
   Field type = field.required("type", "one of none, sky, equirect, cube");
   environment.kind =
-      EnvironmentKind(type.choice("environment type", {"none", "sky", "equirect", "cube"}));
+      type.choose("environment type", kEnvironmentKindNames);
   switch (environment.kind) {
     case EnvironmentKind::None:
       field.expectObject({"type"});

@@ -33,15 +33,6 @@ bool isArrayOf3Numbers(const nlohmann::json& value) {
 
 }  // namespace
 
-std::string joinNames(const Names& names) {
-  std::string joined;
-  for (std::string_view name : names) {
-    if (!joined.empty()) joined += ", ";
-    joined += name;
-  }
-  return joined;
-}
-
 std::string describe(const nlohmann::json& value) {
   constexpr size_t kMaxLength = 60;
   std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);

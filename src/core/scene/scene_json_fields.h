@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/base/names.h"
+
 namespace shadelab::scene_json {
 
 using Names = std::vector<std::string_view>;
@@ -55,6 +57,11 @@ class Field {
   // A string that must be one of `names`; returns its index. `what` names
   // the kind of value ("shape") for the message.
   size_t choice(std::string_view what, const Names& names) const;
+  // The value of a name table (names.h) this field names.
+  template <typename E, size_t N>
+  E choose(std::string_view what, const NameTable<E, N>& table) const {
+    return table[choice(what, namesOf(table))].value;
+  }
 
  private:
   void expectObjectType() const;
@@ -65,7 +72,6 @@ class Field {
 };
 
 // "a, b, c"
-std::string joinNames(const Names& names);
 // A JSON value as written, shortened for messages.
 std::string describe(const nlohmann::json& value);
 // Shortest readable form of a float: 0.1, 100, 1e-06.

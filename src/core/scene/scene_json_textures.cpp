@@ -13,13 +13,10 @@ constexpr std::string_view kHeight = "height_map";
 
 SamplerDesc parseSampler(const Field& field) {
   field.expectObject({"wrap_u", "wrap_v", "filter", "anisotropy"});
-  const Names wraps = {"repeat", "clamp_to_edge", "mirrored_repeat"};
   SamplerDesc sampler;
-  if (auto f = field.optional("wrap_u")) sampler.wrapU = TextureWrap(f->choice("wrap mode", wraps));
-  if (auto f = field.optional("wrap_v")) sampler.wrapV = TextureWrap(f->choice("wrap mode", wraps));
-  if (auto f = field.optional("filter"))
-    sampler.filter =
-        TextureFilter(f->choice("filter", {"nearest", "bilinear", "trilinear", "aniso"}));
+  if (auto f = field.optional("wrap_u")) sampler.wrapU = f->choose("wrap mode", kTextureWrapNames);
+  if (auto f = field.optional("wrap_v")) sampler.wrapV = f->choose("wrap mode", kTextureWrapNames);
+  if (auto f = field.optional("filter")) sampler.filter = f->choose("filter", kTextureFilterNames);
   if (auto f = field.optional("anisotropy")) {
     sampler.maxAnisotropy = f->number();
     if (!(sampler.maxAnisotropy >= 2.0f && sampler.maxAnisotropy <= 16.0f))
@@ -56,8 +53,7 @@ void TextureLibrary::parseTextures(const Field& material, const std::string& own
   if (auto f = material.optional(kHeight)) out.heightMap.texture = mapTexture(*f, owner, kHeight);
   if (auto f = material.optional("bump_scale")) out.bumpScale = f->nonNegative();
   if (auto f = material.optional("uv_mapping"))
-    out.uvProjection = UvProjection(
-        f->choice("uv mapping", {"mesh", "planar", "cylindrical", "spherical", "box"}));
+    out.uvProjection = f->choose("uv mapping", kUvProjectionNames);
   if (auto f = material.optional("uv_scale")) out.uvScale = parseUvScale(*f);
 }
 
@@ -89,8 +85,8 @@ int32_t TextureLibrary::proceduralTexture(const Field& field, std::string_view s
   if (slot == kNormal) allowed.push_back("depth");
   field.expectObject(allowed);
   ProceduralTexture desc;
-  desc.pattern = HeightPattern(field.required("procedural", "a generator name")
-                                   .choice("generator", {"checker", "bricks", "dimples", "waves"}));
+  desc.pattern = field.required("procedural", "a generator name")
+                    .choose("generator", kHeightPatternNames);
   if (auto f = field.optional("size")) desc.size = f->integer(1, 4096, "texels per side");
   if (auto f = field.optional("repeats")) desc.repeats = f->integer(1, 4096, "cells per side");
   glm::vec3 low{0.0f}, high{1.0f};

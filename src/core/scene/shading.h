@@ -1,9 +1,7 @@
 #pragma once
-#include <optional>
-#include <string>
 #include <string_view>
-#include <vector>
 
+#include "core/base/names.h"
 #include "interface.h"
 
 namespace shadelab {
@@ -16,10 +14,17 @@ enum class ShadingModel : int {
   BlinnPhong = SHADING_BLINN_PHONG,
   Unlit = SHADING_UNLIT,
 };
-constexpr int kShadingModelCount = 5;
+inline constexpr NameTable<ShadingModel, 5> kShadingModelNames = {{
+    {ShadingModel::Flat, "flat"},
+    {ShadingModel::Gouraud, "gouraud"},
+    {ShadingModel::Phong, "phong"},
+    {ShadingModel::BlinnPhong, "blinn-phong"},
+    {ShadingModel::Unlit, "unlit"},
+}};
+constexpr int kShadingModelCount = int(kShadingModelNames.size());
 
-std::string_view shadingModelName(ShadingModel model);  // "flat", "gouraud", ...
-std::optional<ShadingModel> parseShadingModel(std::string_view name);
-std::vector<std::string> shadingModelNames();
+inline std::string_view shadingModelName(ShadingModel model) {
+  return nameOf(kShadingModelNames, model);
+}
 
 }  // namespace shadelab

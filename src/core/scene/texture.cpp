@@ -65,20 +65,6 @@ glm::uvec2 mipLevelSize(uint32_t width, uint32_t height, uint32_t level) {
   return {std::max(1u, width >> level), std::max(1u, height >> level)};
 }
 
-namespace {
-constexpr const char* kFilterNames[] = {"nearest", "bilinear", "trilinear", "aniso"};
-}
-
-const char* textureFilterName(TextureFilter filter) {
-  return kFilterNames[int(filter)];
-}
-
-std::optional<TextureFilter> parseTextureFilter(std::string_view name) {
-  for (int i = 0; i < 4; ++i)
-    if (name == kFilterNames[i]) return TextureFilter(i);
-  return std::nullopt;
-}
-
 Texture solidTexture(glm::u8vec4 rgba, TextureRole role, const std::string& name) {
   return {name, 1, 1, {rgba.r, rgba.g, rgba.b, rgba.a}, role == TextureRole::Color};
 }

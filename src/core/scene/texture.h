@@ -28,9 +28,10 @@ uint32_t mipLevelCount(uint32_t width, uint32_t height);
 // Level `level`'s size: each axis halves, rounding down, never below 1.
 glm::uvec2 mipLevelSize(uint32_t width, uint32_t height, uint32_t level);
 
-// "nearest", "bilinear", "trilinear", "aniso": the --filter and JSON "filter" names.
-const char* textureFilterName(TextureFilter filter);
-std::optional<TextureFilter> parseTextureFilter(std::string_view name);
+// As a C string for printf (the table's names are literals).
+inline const char* textureFilterName(TextureFilter filter) {
+  return nameOf(kTextureFilterNames, filter).data();
+}
 
 // A 1x1 texture of one value: the dummy bound to a material's empty slots.
 Texture solidTexture(glm::u8vec4 rgba, TextureRole role, const std::string& name);

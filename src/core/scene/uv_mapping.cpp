@@ -57,20 +57,5 @@ void applyUvProjection(Mesh& mesh, UvProjection projection) {
   computeTangents(mesh);
 }
 
-const char* uvProjectionName(UvProjection projection) {
-  switch (projection) {
-    case UvProjection::Mesh:
-      return "mesh";
-    case UvProjection::Planar:
-      return "planar";
-    case UvProjection::Cylindrical:
-      return "cylindrical";
-    case UvProjection::Spherical:
-      return "spherical";
-    case UvProjection::Box:
-      return "box";
-  }
-  return "?";
-}
 
 }  // namespace shadelab

@@ -23,6 +23,5 @@ glm::vec2 projectUv(UvProjection projection, glm::vec3 position, glm::vec3 norma
 // Replaces every vertex's UV (UvProjection::Mesh keeps them) and recomputes
 // the tangents from the new UVs.
 void applyUvProjection(Mesh& mesh, UvProjection projection);
-const char* uvProjectionName(UvProjection projection);
 
 }  // namespace shadelab

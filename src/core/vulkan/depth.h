@@ -6,25 +6,25 @@
 // 1/z depth squeezes together.
 #include <vulkan/vulkan.h>
 
-#include <array>
-#include <optional>
-#include <string>
 #include <string_view>
-#include <vector>
+
+#include "core/base/names.h"
 
 namespace shadelab {
 
 enum class DepthMode { D16, D24, D32F, ReversedZ };
-inline constexpr std::array<DepthMode, 4> kDepthModes = {DepthMode::D16, DepthMode::D24,
-                                                         DepthMode::D32F, DepthMode::ReversedZ};
+inline constexpr NameTable<DepthMode, 4> kDepthModeNames = {{
+    {DepthMode::D16, "d16"},
+    {DepthMode::D24, "d24"},
+    {DepthMode::D32F, "d32f"},
+    {DepthMode::ReversedZ, "reversed"},
+}};
 
 VkFormat depthFormat(DepthMode mode);  // D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D32_SFLOAT
 bool isReversedZ(DepthMode mode);
 float depthClearValue(DepthMode mode);             // the far plane: 1, or 0 reversed
 VkCompareOp depthCompareOp(DepthMode mode);        // LESS, or GREATER_OR_EQUAL reversed
-std::string_view depthModeName(DepthMode mode);    // "d16", "d24", "d32f", "reversed"
+inline std::string_view depthModeName(DepthMode mode) { return nameOf(kDepthModeNames, mode); }
 std::string_view depthFormatName(DepthMode mode);  // "D16_UNORM", ...
-std::optional<DepthMode> parseDepthMode(std::string_view name);
-std::vector<std::string> depthModeNames();
 
 }  // namespace shadelab
