@@ -53,15 +53,6 @@ ImageU8 encodeSrgb8(const ImageRgba& image) {
   return result;
 }
 
-ImageRgba decodeSrgb8(const ImageU8& image) {
-  ImageRgba result(image.width, image.height);
-  for (size_t i = 0; i < result.pixels.size(); ++i) {
-    float v = image.pixels[i] / 255.0f;
-    result.pixels[i] = i % 4 == 3 ? v : srgbToLinear(v);
-  }
-  return result;
-}
-
 bool isSupportedOutput(const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);

@@ -38,7 +38,6 @@ float linearToSrgb(float linear);
 float srgbToLinear(float encoded);
 // Clamps to [0, 1], encodes, rounds to nearest. Alpha is stored linearly.
 ImageU8 encodeSrgb8(const ImageRgba& image);
-ImageRgba decodeSrgb8(const ImageU8& image);
 
 // Output formats by extension: .png (8-bit sRGB) or .exr (16-bit float, linear).
 bool isSupportedOutput(const std::filesystem::path& path);
