@@ -1,4 +1,5 @@
 #version 460
-// The textured fragment stage of Phong, Blinn-Phong and unlit (forward_textured_fragment.glsl).
+// The textured fragment stage of Phong, Blinn-Phong and unlit (forward_fragment.glsl).
 #extension GL_GOOGLE_include_directive : require
-#include "forward_textured_fragment.glsl"
+#define TEXTURED
+#include "forward_fragment.glsl"

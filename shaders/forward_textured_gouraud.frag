@@ -1,5 +1,6 @@
 #version 460
-// The textured fragment stage of Gouraud shading (forward_textured_fragment.glsl).
+// The textured fragment stage of Gouraud shading (forward_fragment.glsl).
 #extension GL_GOOGLE_include_directive : require
 #define VERTEX_LIGHTING
-#include "forward_textured_fragment.glsl"
+#define TEXTURED
+#include "forward_fragment.glsl"

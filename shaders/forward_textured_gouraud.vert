@@ -1,5 +1,6 @@
 #version 460
-// The textured vertex stage of Gouraud shading (forward_textured_vertex.glsl).
+// The textured vertex stage of Gouraud shading (forward_vertex.glsl).
 #extension GL_GOOGLE_include_directive : require
 #define VERTEX_LIGHTING
-#include "forward_textured_vertex.glsl"
+#define TEXTURED
+#include "forward_vertex.glsl"
