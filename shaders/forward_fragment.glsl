@@ -46,25 +46,25 @@ layout(location = 5) in vec4 inTangent;
 
 layout(location = 0) out vec4 outColor;
 
+// Flat and Gouraud light before the texel is known; TEXTURED passes the light
+// in two parts (texturing.glsl): I = texel * diffusePart + specularPart.
+#ifdef TEXTURED
+#define LIT_EARLIER(diffusePart, specularPart) (texel * diffusePart + specularPart)
+#else
+#define LIT_EARLIER(color, noSpecularPart) (color)
+#endif
+
 void main() {
 #ifdef TEXTURED
   vec2 st = textureCoordinate(inUv);
   vec3 texel = diffuseTexel(st);
 #endif
 #if defined(FLAT_VARYINGS)
-#ifdef TEXTURED
-  vec3 color = texel * inFlatColor + inFlatSpecular;
-#else
-  vec3 color = inFlatColor;
-#endif
+  vec3 color = LIT_EARLIER(inFlatColor, inFlatSpecular);
   EnvironmentDirections environment =
       EnvironmentDirections(inFlatEnvReflected, inFlatEnvRefracted);
 #elif defined(VERTEX_LIGHTING)
-#ifdef TEXTURED
-  vec3 color = texel * inColor + inSpecular;
-#else
-  vec3 color = inColor;
-#endif
+  vec3 color = LIT_EARLIER(inColor, inSpecular);
 #ifdef ENVIRONMENT_VARYINGS
   EnvironmentDirections environment = EnvironmentDirections(inEnvReflected, inEnvRefracted);
 #else
