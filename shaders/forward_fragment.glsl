@@ -1,3 +1,4 @@
+#version 460
 // Forward pass, fragment stage: Phong and Blinn-Phong evaluate the equation
 // per fragment with the interpolated, renormalised normal; flat and Gouraud
 // output the colour computed earlier; unlit writes the diffuse colour as is.

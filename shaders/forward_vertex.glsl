@@ -1,3 +1,4 @@
+#version 460
 // Forward pass, vertex stage. Gouraud (VERTEX_LIGHTING) evaluates the
 // illumination equation here, at each vertex with its averaged normal, and
 // with ENVIRONMENT_VARYINGS its environment directions too; the other models
@@ -7,6 +8,7 @@
 // Each variant declares only the outputs its fragment stage reads: lavapipe
 // sets up and interpolates every output, and the unused ones made the 800x600
 // Gouraud frame 1.36x glmark2's (scripts/peer_bench.sh, docs/PERFORMANCE.md).
+// The variants and their defines: the shader table in shaders/CMakeLists.txt.
 #extension GL_GOOGLE_include_directive : require
 #include "environment.glsl"
 #ifdef TEXTURED

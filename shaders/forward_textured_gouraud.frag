@@ -1,6 +1,0 @@
-#version 460
-// The textured fragment stage of Gouraud shading (forward_fragment.glsl).
-#extension GL_GOOGLE_include_directive : require
-#define VERTEX_LIGHTING
-#define TEXTURED
-#include "forward_fragment.glsl"
