@@ -137,7 +137,8 @@ TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
 
 // Every row of the shader table, the ones compiled with defines included.
 TEST(GlslCompiler, RunTimeSpirvEqualsTheBuildsSpirv) {
-  EXPECT_EQ(Renderer::shaderVariants().size(), 16u);  // forward: 8 stage variants, plain and textured
+  // The forward pass reloads 8 stage variants, plain and textured.
+  EXPECT_EQ(Renderer::shaderVariants().size(), 16u);
   for (const ShaderVariant& variant : shaderTable()) {
     GlslCompileResult result = compileGlsl(SHADELAB_SHADER_SOURCE_DIR, variant);
     ASSERT_TRUE(result.ok()) << result.log;

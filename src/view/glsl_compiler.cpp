@@ -81,7 +81,8 @@ GlslCompileResult compileGlsl(const std::filesystem::path& directory,
   std::filesystem::path path = directory / variant.source;
   EShLanguage stage;
   if (!stageOf(variant.stage, stage)) {
-    result.log = path.string() + ": not a vertex, tessellation, geometry, fragment or compute stage";
+    result.log = path.string() + ": not a vertex, tessellation, geometry, fragment or compute "
+                                 "stage";
     return result;
   }
   std::string source;
@@ -97,7 +98,8 @@ GlslCompileResult compileGlsl(const std::filesystem::path& directory,
   // What glslangValidator makes of -DNAME: one line of a preamble that glslang
   // reads after the #version line.
   std::string preamble;
-  for (std::string_view define : variant.defines) preamble += "#define " + std::string(define) + "\n";
+  for (std::string_view define : variant.defines)
+    preamble += "#define " + std::string(define) + "\n";
   shader.setPreamble(preamble.c_str());
   shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
