@@ -3,16 +3,30 @@
 // evaluated once at the centroid with the triangle's geometric normal (not
 // a vertex's averaged normal). A geometry shader sees the whole triangle,
 // which neither the vertex nor the fragment stage does.
+// TEXTURED passes the texture coordinate through and keeps the lighting in
+// two parts (the diffuse texel scales one). Bump maps do not apply: flat
+// shading lights a triangle once, with its geometric normal.
 #extension GL_GOOGLE_include_directive : require
 #include "environment.glsl"
+#ifdef TEXTURED
+#include "texturing.glsl"
+#endif
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
+// From the vertex stage: what the face needs; out: what the fragment stage
+// (FLAT_VARYINGS) reads: one colour and one environment lookup per triangle.
 layout(location = 0) in vec3 inPosition[];
+#ifdef TEXTURED
+layout(location = 4) in vec2 inUv[];
+#endif
 
-// What forward_flat.frag reads: one colour and one environment lookup per triangle.
 layout(location = 3) flat out vec3 outFlatColor;
+#ifdef TEXTURED
+layout(location = 4) out vec2 outUv;
+layout(location = 7) flat out vec3 outFlatSpecular;
+#endif
 layout(location = 10) flat out vec4 outFlatEnvReflected;
 layout(location = 11) flat out vec4 outFlatEnvRefracted;
 
@@ -21,12 +35,23 @@ void main() {
   // Counter-clockwise winding seen from the front gives the outward normal.
   vec3 faceNormal = cross(p1 - p0, p2 - p0);
   vec3 center = (p0 + p1 + p2) / 3.0;
+#ifdef TEXTURED
+  vec3 diffusePart, specularPart;
+  illuminateParts(center, faceNormal, diffusePart, specularPart);
+#else
   vec3 color = illuminate(center, faceNormal, drawMaterial(), false);
+#endif
   EnvironmentDirections environment = EnvironmentDirections(vec4(0.0), vec4(0.0));
   if (environmentEnabled) environment = environmentDirections(center, faceNormal, draw.optics.z);
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
+#ifdef TEXTURED
+    outFlatColor = diffusePart;
+    outUv = inUv[i];
+    outFlatSpecular = specularPart;
+#else
     outFlatColor = color;
+#endif
     outFlatEnvReflected = environment.reflected;
     outFlatEnvRefracted = environment.refracted;
     EmitVertex();

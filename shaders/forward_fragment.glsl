@@ -1,23 +1,38 @@
-// Forward pass, fragment stage (forward.frag, forward_gouraud.frag,
-// forward_gouraud_environment.frag, forward_flat.frag): Phong and Blinn-Phong
-// evaluate the equation per fragment with the interpolated, renormalised
-// normal; flat and Gouraud output the colour computed earlier; unlit writes
-// the diffuse colour as is. With an environment, every lit model adds its
-// term (environment.glsl), from directions found per fragment, per vertex
-// (Gouraud) or per triangle (flat).
+#version 460
+// Forward pass, fragment stage: Phong and Blinn-Phong evaluate the equation
+// per fragment with the interpolated, renormalised normal; flat and Gouraud
+// output the colour computed earlier; unlit writes the diffuse colour as is.
+// With an environment, every lit model adds its term (environment.glsl), from
+// directions found per fragment, per vertex (Gouraud) or per triangle (flat).
+// TEXTURED: the diffuse texel multiplies ka and kd in every model. Bump
+// mapping needs the equation per fragment, so only Phong and Blinn-Phong
+// apply normal and height maps, and reflect and refract about the bumped
+// normal; flat and Gouraud light with the geometric / vertex normals.
 // The variants differ only in their inputs (forward_vertex.glsl says why):
 // FLAT_VARYINGS: the flat geometry stage's per-triangle colour and directions;
 // VERTEX_LIGHTING: Gouraud's vertex colour, with ENVIRONMENT_VARYINGS its
 // per-vertex directions; neither: the eye-space position and normal.
 #extension GL_GOOGLE_include_directive : require
+#ifdef TEXTURED
+#include "bump.glsl"
+#endif
 #include "environment.glsl"
 
+#ifdef TEXTURED
+layout(location = 4) in vec2 inUv;
+#endif
 #if defined(FLAT_VARYINGS)
 layout(location = 3) flat in vec3 inFlatColor;
+#ifdef TEXTURED
+layout(location = 7) flat in vec3 inFlatSpecular;
+#endif
 layout(location = 10) flat in vec4 inFlatEnvReflected;
 layout(location = 11) flat in vec4 inFlatEnvRefracted;
 #elif defined(VERTEX_LIGHTING)
 layout(location = 2) in vec3 inColor;
+#ifdef TEXTURED
+layout(location = 6) in vec3 inSpecular;
+#endif
 #ifdef ENVIRONMENT_VARYINGS
 layout(location = 8) in vec4 inEnvReflected;
 layout(location = 9) in vec4 inEnvRefracted;
@@ -25,22 +40,50 @@ layout(location = 9) in vec4 inEnvRefracted;
 #else
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
+#ifdef TEXTURED
+layout(location = 5) in vec4 inTangent;
+#endif
 #endif
 
 layout(location = 0) out vec4 outColor;
 
+// Flat and Gouraud light before the texel is known; TEXTURED passes the light
+// in two parts (texturing.glsl): I = texel * diffusePart + specularPart.
+#ifdef TEXTURED
+#define LIT_EARLIER(diffusePart, specularPart) (texel * diffusePart + specularPart)
+#else
+#define LIT_EARLIER(color, noSpecularPart) (color)
+#endif
+
 void main() {
+#ifdef TEXTURED
+  vec2 st = textureCoordinate(inUv);
+  vec3 texel = diffuseTexel(st);
+#endif
 #if defined(FLAT_VARYINGS)
-  vec3 color = inFlatColor;
+  vec3 color = LIT_EARLIER(inFlatColor, inFlatSpecular);
   EnvironmentDirections environment =
       EnvironmentDirections(inFlatEnvReflected, inFlatEnvRefracted);
 #elif defined(VERTEX_LIGHTING)
-  vec3 color = inColor;
+  vec3 color = LIT_EARLIER(inColor, inSpecular);
 #ifdef ENVIRONMENT_VARYINGS
   EnvironmentDirections environment = EnvironmentDirections(inEnvReflected, inEnvRefracted);
 #else
   EnvironmentDirections environment = EnvironmentDirections(vec4(0.0), vec4(0.0));
 #endif
+#elif defined(TEXTURED)
+  vec3 color;
+  vec3 normal = inNormal;
+  if (shadingModel == SHADING_UNLIT) {
+    color = texel * draw.kd.rgb;
+  } else {
+    SurfaceMaterial material = drawMaterial();
+    material.ka *= texel;
+    material.kd *= texel;
+    normal = bumpedNormal(inNormal, inTangent, st);
+    color = illuminate(inPosition, normal, material, shadingModel == SHADING_BLINN_PHONG);
+  }
+  EnvironmentDirections environment = environmentDirections(inPosition, normal, draw.optics.z);
 #else
   vec3 color = shadingModel == SHADING_UNLIT
                    ? draw.kd.rgb

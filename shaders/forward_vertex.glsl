@@ -1,19 +1,34 @@
-// Forward pass, vertex stage (forward.vert, forward_gouraud.vert,
-// forward_gouraud_environment.vert). Gouraud (VERTEX_LIGHTING) evaluates the
+#version 460
+// Forward pass, vertex stage. Gouraud (VERTEX_LIGHTING) evaluates the
 // illumination equation here, at each vertex with its averaged normal, and
 // with ENVIRONMENT_VARYINGS its environment directions too; the other models
-// pass the eye-space position and normal on.
+// pass the eye-space position and normal on. TEXTURED adds the texture
+// coordinate and the eye-space tangent frame, and Gouraud then keeps the part
+// the diffuse texel scales apart from the specular part.
 // Each variant declares only the outputs its fragment stage reads: lavapipe
 // sets up and interpolates every output, and the unused ones made the 800x600
 // Gouraud frame 1.36x glmark2's (scripts/peer_bench.sh, docs/PERFORMANCE.md).
+// The variants and their defines: the shader table in shaders/CMakeLists.txt.
 #extension GL_GOOGLE_include_directive : require
 #include "environment.glsl"
+#ifdef TEXTURED
+#include "texturing.glsl"
+#endif
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
+#ifdef TEXTURED
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inTangent;
+
+layout(location = 4) out vec2 outUv;
+#endif
 
 #ifdef VERTEX_LIGHTING
-layout(location = 2) out vec3 outColor;  // the lit vertex colour
+layout(location = 2) out vec3 outColor;  // lit colour; TEXTURED: Ia ka + sum f_att Ip kd N.L
+#ifdef TEXTURED
+layout(location = 6) out vec3 outSpecular;  // sum f_att Ip ks (R.V)^n
+#endif
 #ifdef ENVIRONMENT_VARYINGS
 layout(location = 8) out vec4 outEnvReflected;  // environment.glsl's directions
 layout(location = 9) out vec4 outEnvRefracted;
@@ -21,6 +36,9 @@ layout(location = 9) out vec4 outEnvRefracted;
 #else
 layout(location = 0) out vec3 outPosition;  // eye space
 layout(location = 1) out vec3 outNormal;    // eye space, not normalised
+#ifdef TEXTURED
+layout(location = 5) out vec4 outTangent;  // eye space xyz, w = handedness
+#endif
 #endif
 
 void main() {
@@ -28,8 +46,15 @@ void main() {
   vec4 eye = object.modelView * vec4(inPosition, 1.0);
   // Normals transform by the inverse transpose of the model-view matrix.
   vec3 normal = mat3(object.normalMatrix) * inNormal;
+#ifdef TEXTURED
+  outUv = inUv;
+#endif
 #ifdef VERTEX_LIGHTING
+#ifdef TEXTURED
+  illuminateParts(eye.xyz, normal, outColor, outSpecular);
+#else
   outColor = illuminate(eye.xyz, normal, drawMaterial(), false);
+#endif
 #ifdef ENVIRONMENT_VARYINGS
   EnvironmentDirections environment = environmentDirections(eye.xyz, normal, draw.optics.z);
   outEnvReflected = environment.reflected;
@@ -38,6 +63,13 @@ void main() {
 #else
   outPosition = eye.xyz;
   outNormal = normal;
+#ifdef TEXTURED
+  // Tangents lie in the surface, so they transform like positions; a
+  // mirroring transform flips the frame's handedness.
+  mat3 linear = mat3(object.modelView);
+  outTangent = vec4(linear * inTangent.xyz,
+                    inTangent.w * (determinant(linear) < 0.0 ? -1.0 : 1.0));
+#endif
 #endif
   gl_Position = frame.projection * eye;
 }

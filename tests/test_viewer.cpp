@@ -332,10 +332,10 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   EXPECT_FALSE(matchesImage(before, after));
   // A headless renderer given the same edited shaders draws what the window showed.
   std::map<std::string, std::vector<uint32_t>> spirv;
-  for (const std::string& name : Renderer::shaderNames()) {
-    GlslCompileResult compiled = compileGlslFile(shaders, name);
+  for (const ShaderVariant& variant : Renderer::shaderVariants()) {
+    GlslCompileResult compiled = compileGlsl(shaders, variant);
     ASSERT_TRUE(compiled.ok()) << compiled.log;
-    spirv[name] = compiled.spirv;
+    spirv[std::string(variant.name)] = compiled.spirv;
   }
   Renderer edited(context());
   edited.reloadShaders(spirv);

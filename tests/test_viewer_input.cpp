@@ -10,7 +10,7 @@
 
 #include "core/base/errors.h"
 #include "view/glsl_compiler.h"
-#include "core/vulkan/shader.h"
+#include "core/vulkan/shader_table.h"
 #include "passes/renderer.h"
 #include "view/camera_controller.h"
 #include "view/viewer_script.h"
@@ -135,26 +135,47 @@ TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
   EXPECT_NE(parseError("screenshot /no/such/dir/a.png").find("bad.txt:1:"), std::string::npos);
 }
 
+// Every row of the shader table, the ones compiled with defines included.
 TEST(GlslCompiler, RunTimeSpirvEqualsTheBuildsSpirv) {
-  for (const std::string& name : Renderer::shaderNames()) {
-    GlslCompileResult result = compileGlslFile(SHADELAB_SHADER_SOURCE_DIR, name);
+  // The forward pass reloads 8 stage variants, plain and textured.
+  EXPECT_EQ(Renderer::shaderVariants().size(), 16u);
+  for (const ShaderVariant& variant : shaderTable()) {
+    GlslCompileResult result = compileGlsl(SHADELAB_SHADER_SOURCE_DIR, variant);
     ASSERT_TRUE(result.ok()) << result.log;
-    std::span<const uint32_t> built = embeddedSpirv(name);
-    EXPECT_TRUE(std::equal(result.spirv.begin(), result.spirv.end(), built.begin(), built.end()))
-        << name << ": " << result.spirv.size() << " words at run time, " << built.size()
-        << " from the build";
+    EXPECT_TRUE(std::equal(result.spirv.begin(), result.spirv.end(), variant.spirv.begin(),
+                           variant.spirv.end()))
+        << variant.name << ": " << result.spirv.size() << " words at run time, "
+        << variant.spirv.size() << " from the build";
   }
+}
+
+// The defines reach the preprocessor: a body that refuses to compile without them.
+TEST(GlslCompiler, DefinesReachThePreprocessor) {
+  std::filesystem::path dir = std::filesystem::path(SHADELAB_TEST_OUTPUT_DIR) / "glsl";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "needs_defines.frag")
+      << "#version 460\n#if !defined(FIRST) || !defined(SECOND)\n#error missing define\n#endif\n"
+         "void main() {}\n";
+  const std::string_view both[] = {"FIRST", "SECOND"};
+  ShaderVariant variant{"needs_defines", VK_SHADER_STAGE_FRAGMENT_BIT, "needs_defines.frag", both};
+  EXPECT_TRUE(compileGlsl(dir, variant).ok());
+  variant.defines = std::span(both).first(1);
+  GlslCompileResult result = compileGlsl(dir, variant);
+  EXPECT_FALSE(result.ok());
+  EXPECT_NE(result.log.find("missing define"), std::string::npos) << result.log;
 }
 
 TEST(GlslCompiler, ErrorsNameFileAndLine) {
   std::filesystem::path dir = std::filesystem::path(SHADELAB_TEST_OUTPUT_DIR) / "glsl";
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "broken.frag") << "#version 460\nvoid main() {\n  undefinedThing = 1.0;\n}\n";
-  GlslCompileResult result = compileGlslFile(dir, "broken.frag");
+  const std::string_view defines[] = {"SOME_DEFINE"};  // a preamble must not shift the line
+  GlslCompileResult result =
+      compileGlsl(dir, {"broken", VK_SHADER_STAGE_FRAGMENT_BIT, "broken.frag", defines});
   EXPECT_FALSE(result.ok());
   EXPECT_NE(result.log.find("broken.frag:3"), std::string::npos) << result.log;
   EXPECT_NE(result.log.find("undefinedThing"), std::string::npos) << result.log;
-  EXPECT_FALSE(compileGlslFile(dir, "missing.frag").ok());
+  EXPECT_FALSE(compileGlsl(dir, {"missing", VK_SHADER_STAGE_FRAGMENT_BIT, "missing.frag"}).ok());
 }
 
 }  // namespace

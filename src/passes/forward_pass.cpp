@@ -1,10 +1,13 @@
 #include "passes/forward_pass.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cstddef>
 #include <optional>
+#include <string_view>
 #include <vector>
 
+#include "core/base/errors.h"
 #include "core/scene/mesh.h"
 #include "core/vulkan/shader.h"
 #include "core/vulkan/vk_check.h"
@@ -54,21 +57,49 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
   VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
   layout_ = PipelineLayout(device, layout);
 
-  for (const std::string& name : shaderNames()) modules_[name] = loadShader(device, name);
+  for (const ShaderVariant& variant : shaderVariants())
+    modules_[std::string(variant.name)] = createShaderModule(device, variant.spirv);
 }
 
-// The stages of one variant: `base` is forward or forward_textured, and the
-// suffix says which varyings the stages pass (shaders/forward_vertex.glsl).
-static std::vector<std::string> stageNames(const std::string& base) {
-  return {base + ".vert",  base + "_gouraud.vert", base + "_gouraud_environment.vert",
-          base + "_flat.geom", base + ".frag",     base + "_gouraud.frag",
-          base + "_gouraud_environment.frag", base + "_flat.frag"};
+// The forward pass's body for each stage; the shader table (shaders/CMakeLists.txt)
+// compiles each with the defines of its variants.
+static std::string_view forwardSource(VkShaderStageFlagBits stage) {
+  switch (stage) {
+    case VK_SHADER_STAGE_VERTEX_BIT: return "forward_vertex.glsl";
+    case VK_SHADER_STAGE_GEOMETRY_BIT: return "forward_flat.geom";
+    case VK_SHADER_STAGE_FRAGMENT_BIT: return "forward_fragment.glsl";
+    default: return {};
+  }
 }
 
-std::vector<std::string> ForwardPass::shaderNames() {
-  std::vector<std::string> names = stageNames("forward");
-  for (const std::string& name : stageNames("forward_textured")) names.push_back(name);
-  return names;
+// The table row that runs `stage` for a shading model: its body with the
+// defines that declare only the varyings the model passes
+// (shaders/forward_vertex.glsl says why) and TEXTURED for the uv and tangent.
+static const ShaderVariant& forwardStage(VkShaderStageFlagBits stage, ShadingModel model,
+                                         bool textured, bool environment) {
+  std::vector<std::string_view> defines;
+  if (textured) defines.push_back("TEXTURED");
+  if (model == ShadingModel::Gouraud) {
+    defines.push_back("VERTEX_LIGHTING");
+    if (environment) defines.push_back("ENVIRONMENT_VARYINGS");
+  }
+  // Flat's geometry stage hands the fragment stage one colour per triangle.
+  if (model == ShadingModel::Flat && stage == VK_SHADER_STAGE_FRAGMENT_BIT)
+    defines.push_back("FLAT_VARYINGS");
+  for (const ShaderVariant& variant : shaderTable())
+    if (variant.stage == stage && variant.source == forwardSource(stage) &&
+        std::is_permutation(variant.defines.begin(), variant.defines.end(), defines.begin(),
+                            defines.end()))
+      return variant;
+  throw VulkanError("the shader table (shaders/CMakeLists.txt) has no row for " +
+                    std::string(forwardSource(stage)) + " with the defines of this variant");
+}
+
+std::vector<ShaderVariant> ForwardPass::shaderVariants() {
+  std::vector<ShaderVariant> variants;
+  for (const ShaderVariant& variant : shaderTable())
+    if (variant.source == forwardSource(variant.stage)) variants.push_back(variant);
+  return variants;
 }
 
 void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
@@ -125,22 +156,13 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
   };
   // Flat shading needs the whole triangle to find its geometric normal. The
   // stages come in variants that differ only in the varyings they pass.
-  std::string base = textured ? "forward_textured" : "forward";
-  auto add = [&](VkShaderStageFlagBits stage, const std::string& name) {
-    addStage(stage, modules_.at(name).get());
+  auto add = [&](VkShaderStageFlagBits stage) {
+    const ShaderVariant& variant = forwardStage(stage, model, textured, environment);
+    addStage(stage, modules_.at(std::string(variant.name)).get());
   };
-  if (model == ShadingModel::Flat) {
-    add(VK_SHADER_STAGE_VERTEX_BIT, base + ".vert");
-    add(VK_SHADER_STAGE_GEOMETRY_BIT, base + "_flat.geom");
-    add(VK_SHADER_STAGE_FRAGMENT_BIT, base + "_flat.frag");
-  } else if (model == ShadingModel::Gouraud) {
-    std::string suffix = environment ? "_gouraud_environment" : "_gouraud";
-    add(VK_SHADER_STAGE_VERTEX_BIT, base + suffix + ".vert");
-    add(VK_SHADER_STAGE_FRAGMENT_BIT, base + suffix + ".frag");
-  } else {
-    add(VK_SHADER_STAGE_VERTEX_BIT, base + ".vert");
-    add(VK_SHADER_STAGE_FRAGMENT_BIT, base + ".frag");
-  }
+  add(VK_SHADER_STAGE_VERTEX_BIT);
+  if (model == ShadingModel::Flat) add(VK_SHADER_STAGE_GEOMETRY_BIT);
+  add(VK_SHADER_STAGE_FRAGMENT_BIT);
 
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   // Only the attributes the shaders read: lavapipe fetches every declared

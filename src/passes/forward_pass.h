@@ -4,9 +4,9 @@
 // Reads: set 0 = FrameData (uniform) + ObjectData[] (storage) + the environment
 // cube (environment term: kr, kt and ior per draw), vertex/index buffers;
 // textured draws also set 1 (their material's textures).
-// Textured draws use their own variants (forward_textured.*): they read the
-// uv and tangent attributes, which the others do not declare. Transparent
-// draws use blended variants that do not write depth.
+// Textured draws use their own variants (the TEXTURED rows of the shader
+// table): they read the uv and tangent attributes, which the others do not
+// declare. Transparent draws use blended variants that do not write depth.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
 #include <map>
 #include <span>
@@ -18,6 +18,7 @@
 #include "core/vulkan/depth.h"
 #include "core/vulkan/gpu_scene.h"
 #include "core/vulkan/resources.h"
+#include "core/vulkan/shader_table.h"
 #include "core/scene/shading.h"
 
 namespace shadelab {
@@ -55,8 +56,9 @@ class ForwardPass {
                        const GpuScene& scene, std::span<const DrawItem> draws,
                        const VkViewport& viewport) const;
 
-  static std::vector<std::string> shaderNames();
-  // New SPIR-V by source name; drops every pipeline (prepare() rebuilds them).
+  // The shader table rows (shaders/CMakeLists.txt) compiled from the forward bodies.
+  static std::vector<ShaderVariant> shaderVariants();
+  // New SPIR-V by row name; drops every pipeline (prepare() rebuilds them).
   void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:
@@ -69,7 +71,7 @@ class ForwardPass {
   DescriptorSetLayout setLayout_;
   DescriptorSetLayout materialSetLayout_;
   PipelineLayout layout_;
-  std::map<std::string, ShaderModule> modules_;  // by source name: every one of shaderNames()
+  std::map<std::string, ShaderModule> modules_;  // by row name: every one of shaderVariants()
   std::map<VariantKey, Pipeline> pipelines_;
 };
 

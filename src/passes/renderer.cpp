@@ -374,8 +374,8 @@ void Renderer::finishFrames(RenderStats& stats) {
     retire(frames_[(frameIndex_ + i) % kFramesInFlight], stats);
 }
 
-std::vector<std::string> Renderer::shaderNames() {
-  return ForwardPass::shaderNames();
+std::vector<ShaderVariant> Renderer::shaderVariants() {
+  return ForwardPass::shaderVariants();
 }
 
 void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {

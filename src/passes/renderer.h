@@ -112,10 +112,10 @@ class Renderer {
   const Image& colorTarget() const { return target_.color; }
   ImageUse& colorTargetUse() { return target_.colorUse; }
 
-  // Every shader the passes use, by source name (e.g. "forward.frag").
-  static std::vector<std::string> shaderNames();
-  // Replaces the passes' shaders (SPIR-V by source name; every name of
-  // shaderNames() present) and rebuilds their pipelines. Waits for the device.
+  // The shader table rows the passes reload (shaders/CMakeLists.txt).
+  static std::vector<ShaderVariant> shaderVariants();
+  // Replaces the passes' shaders (SPIR-V by row name; every row of
+  // shaderVariants() present) and rebuilds their pipelines. Waits for the device.
   void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:

@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <string_view>
 
 namespace shadelab {
 namespace {
@@ -56,30 +57,34 @@ class FolderIncluder : public glslang::TShader::Includer {
   std::map<IncludeResult*, std::unique_ptr<std::string>> texts_;
 };
 
-bool stageOf(const std::string& name, EShLanguage& stage) {
-  static const std::map<std::string, EShLanguage> stages = {
-      {".vert", EShLangVertex},  {".geom", EShLangGeometry},    {".frag", EShLangFragment},
-      {".comp", EShLangCompute}, {".tesc", EShLangTessControl}, {".tese", EShLangTessEvaluation}};
-  auto found = stages.find(std::filesystem::path(name).extension().string());
-  if (found == stages.end()) return false;
-  stage = found->second;
-  return true;
+bool stageOf(VkShaderStageFlagBits vulkanStage, EShLanguage& stage) {
+  switch (vulkanStage) {
+    case VK_SHADER_STAGE_VERTEX_BIT: stage = EShLangVertex; return true;
+    case VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT: stage = EShLangTessControl; return true;
+    case VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT: stage = EShLangTessEvaluation; return true;
+    case VK_SHADER_STAGE_GEOMETRY_BIT: stage = EShLangGeometry; return true;
+    case VK_SHADER_STAGE_FRAGMENT_BIT: stage = EShLangFragment; return true;
+    case VK_SHADER_STAGE_COMPUTE_BIT: stage = EShLangCompute; return true;
+    default: return false;
+  }
 }
 
 }  // namespace
 
-GlslCompileResult compileGlslFile(const std::filesystem::path& directory, const std::string& name) {
+GlslCompileResult compileGlsl(const std::filesystem::path& directory,
+                              const ShaderVariant& variant) {
   // glslang keeps process-wide tables: initialise once, never finalise.
   static std::once_flag initialised;
   std::call_once(initialised, [] { glslang::InitializeProcess(); });
 
   GlslCompileResult result;
+  std::filesystem::path path = directory / variant.source;
   EShLanguage stage;
-  if (!stageOf(name, stage)) {
-    result.log = name + ": unknown shader stage (expected .vert .geom .frag .comp .tesc .tese)";
+  if (!stageOf(variant.stage, stage)) {
+    result.log = path.string() + ": not a vertex, tessellation, geometry, fragment or compute "
+                                 "stage";
     return result;
   }
-  std::filesystem::path path = directory / name;
   std::string source;
   if (!readText(path, source)) {
     result.log = path.string() + ": cannot read the file";
@@ -90,6 +95,12 @@ GlslCompileResult compileGlslFile(const std::filesystem::path& directory, const 
   std::string pathName = path.string();
   const char* fileName = pathName.c_str();
   shader.setStringsWithLengthsAndNames(&text, nullptr, &fileName, 1);
+  // What glslangValidator makes of -DNAME: one line of a preamble that glslang
+  // reads after the #version line.
+  std::string preamble;
+  for (std::string_view define : variant.defines)
+    preamble += "#define " + std::string(define) + "\n";
+  shader.setPreamble(preamble.c_str());
   shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);

@@ -1,11 +1,13 @@
 #pragma once
 // GLSL to SPIR-V at run time (glslang), for reloading shaders from disk while
-// the viewer runs. The build compiles the same files with glslangValidator;
-// both produce the same SPIR-V.
+// the viewer runs. The build compiles the same shader table rows with
+// glslangValidator; both produce the same SPIR-V.
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "core/vulkan/shader_table.h"
 
 namespace shadelab {
 
@@ -15,8 +17,10 @@ struct GlslCompileResult {
   bool ok() const { return !spirv.empty(); }
 };
 
-// Compiles `directory`/`name` (stage from the extension: .vert .geom .frag
-// .comp .tesc .tese) for Vulkan 1.3; #include resolves inside `directory`.
-GlslCompileResult compileGlslFile(const std::filesystem::path& directory, const std::string& name);
+// Compiles `directory`/`variant.source` as `variant.stage` for Vulkan 1.3,
+// with `#define NAME` for each of its defines (glslangValidator's -D);
+// #include resolves inside `directory`.
+GlslCompileResult compileGlsl(const std::filesystem::path& directory,
+                              const ShaderVariant& variant);
 
 }  // namespace shadelab

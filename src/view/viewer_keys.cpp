@@ -178,12 +178,12 @@ void Viewer::applyTextureOptions(const std::string& message) {
 
 void Viewer::reloadShaders() {
   std::map<std::string, std::vector<uint32_t>> spirv;
-  for (const std::string& name : Renderer::shaderNames()) {
-    GlslCompileResult result = compileGlslFile(options_.shaderDirectory, name);
+  for (const ShaderVariant& variant : Renderer::shaderVariants()) {
+    GlslCompileResult result = compileGlsl(options_.shaderDirectory, variant);
     // Keep every last good pipeline: replace nothing unless all compile.
     if (!result.ok())
       return say("shader reload failed, kept the last good shaders:\n" + result.log, true);
-    spirv[name] = std::move(result.spirv);
+    spirv[std::string(variant.name)] = std::move(result.spirv);
   }
   renderer_.reloadShaders(spirv);
   say("shaders reloaded from " + options_.shaderDirectory.string());

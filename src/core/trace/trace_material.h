@@ -1,6 +1,6 @@
 #pragma once
 // Textured materials at a traced hit: the diffuse texel (it scales ka and
-// kd, as in shaders/forward_textured.frag) and the bump-mapped normal
+// kd, as in shaders/forward_fragment.glsl) and the bump-mapped normal
 // (shaders/bump.glsl: tangent-space normal maps and height maps, whiteout
 // blending), both looked up at a level of detail from the ray's footprint.
 //

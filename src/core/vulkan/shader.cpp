@@ -16,6 +16,12 @@ ShaderModule createShaderModule(VkDevice device, std::span<const uint32_t> spirv
   return ShaderModule(device, module);
 }
 
+std::span<const uint32_t> embeddedSpirv(std::string_view name) {
+  for (const ShaderVariant& variant : shaderTable())
+    if (variant.name == name) return variant.spirv;
+  return {};
+}
+
 ShaderModule loadShader(VkDevice device, std::string_view name) {
   std::span<const uint32_t> spirv = embeddedSpirv(name);
   if (spirv.empty())

@@ -1,6 +1,0 @@
-#version 460
-// The forward fragment stage of Gouraud shading with an environment (forward_fragment.glsl).
-#extension GL_GOOGLE_include_directive : require
-#define VERTEX_LIGHTING
-#define ENVIRONMENT_VARYINGS
-#include "forward_fragment.glsl"

@@ -1,5 +1,0 @@
-#version 460
-// The textured fragment stage of flat shading, after forward_textured_flat.geom (forward_textured_fragment.glsl).
-#extension GL_GOOGLE_include_directive : require
-#define FLAT_VARYINGS
-#include "forward_textured_fragment.glsl"
