@@ -7,6 +7,7 @@
 #include <meshoptimizer.h>
 
 #include "core/scene/frustum.h"
+#include "core/scene/lighting.h"
 #include "core/scene/transform.h"
 #include "core/scene/uv_mapping.h"
 
@@ -175,20 +176,12 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
   frame.lightCount = glm::ivec4(int(layout.point), int(layout.directional), 0, 0);
   uint32_t nextPoint = 0, nextDirectional = layout.point;
   for (size_t i = 0; i < layout.total(); ++i) {
-    const Light& light = scene.lights[i];
-    bool point = light.type == LightType::Point;
+    const Light light = lightInView(scene.lights[i], view);
+    const bool point = light.type == LightType::Point;
     gpu::GpuLight& out = frame.lights[point ? nextPoint++ : nextDirectional++];
-    if (point) {
-      out.position = view * glm::vec4(light.position, 1.0f);
-      out.type.x = LIGHT_POINT;
-    } else {
-      // Directions transform without translation; the shader wants the unit
-      // direction towards the light (zero stays zero: it lights nothing).
-      glm::vec3 toward = glm::mat3(view) * -light.direction;
-      float length = glm::length(toward);
-      out.position = glm::vec4(length > 0.0f ? toward / length : glm::vec3(0.0f), 0.0f);
-      out.type.x = LIGHT_DIRECTIONAL;
-    }
+    // The shader wants a directional light's unit direction *towards* it.
+    out.position = point ? glm::vec4(light.position, 1.0f) : glm::vec4(-light.direction, 0.0f);
+    out.type.x = point ? LIGHT_POINT : LIGHT_DIRECTIONAL;
     out.intensity = glm::vec4(light.intensity, 0.0f);
     out.attenuation = glm::vec4(light.attenuation, 0.0f);
   }
