@@ -14,14 +14,14 @@
 namespace shadelab {
 
 // The structs in shaders/interface.h must match std140/std430 exactly.
-static_assert(sizeof(gpu::GpuLight) == 64);
+// An array's stride is 16-byte aligned in std140: GpuLight's 48 bytes are.
+static_assert(sizeof(gpu::GpuLight) == 48);
 static_assert(offsetof(gpu::GpuLight, intensity) == 16);
-static_assert(offsetof(gpu::GpuLight, type) == 48);
+static_assert(offsetof(gpu::GpuLight, attenuation) == 32);
 static_assert(offsetof(gpu::FrameData, ambient) == 64);
-static_assert(offsetof(gpu::FrameData, lightCount) == 80);
-static_assert(offsetof(gpu::FrameData, lights) == 96);
-static_assert(offsetof(gpu::FrameData, viewToWorld) == 96 + 64 * MAX_LIGHTS);
-static_assert(sizeof(gpu::FrameData) == 96 + 64 * MAX_LIGHTS + 64);
+static_assert(offsetof(gpu::FrameData, lights) == 80);
+static_assert(offsetof(gpu::FrameData, viewToWorld) == 80 + 48 * MAX_LIGHTS);
+static_assert(sizeof(gpu::FrameData) == 80 + 48 * MAX_LIGHTS + 64);
 static_assert(offsetof(gpu::ObjectData, normalMatrix) == 64);
 static_assert(sizeof(gpu::ObjectData) == 128);
 static_assert(offsetof(gpu::DrawConstants, kd) == 16);
@@ -173,7 +173,6 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
   // The view is a rigid lookAt: its rotation's inverse is the transpose.
   frame.viewToWorld = glm::mat4(glm::transpose(glm::mat3(view)));
   LightLayout layout = lightLayoutOf(scene);
-  frame.lightCount = glm::ivec4(int(layout.point), int(layout.directional), 0, 0);
   uint32_t nextPoint = 0, nextDirectional = layout.point;
   for (size_t i = 0; i < layout.total(); ++i) {
     const Light light = lightInView(scene.lights[i], view);
@@ -181,7 +180,6 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
     gpu::GpuLight& out = frame.lights[point ? nextPoint++ : nextDirectional++];
     // The shader wants a directional light's unit direction *towards* it.
     out.position = point ? glm::vec4(light.position, 1.0f) : glm::vec4(-light.direction, 0.0f);
-    out.type.x = point ? LIGHT_POINT : LIGHT_DIRECTIONAL;
     out.intensity = glm::vec4(light.intensity, 0.0f);
     out.attenuation = glm::vec4(light.attenuation, 0.0f);
   }
