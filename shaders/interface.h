@@ -2,7 +2,7 @@
 // Included by both sides: in C++ the GLSL type names alias GLM types, so each
 // struct is written once. Only vec4/mat4/ivec4 members are used, so std140
 // and std430 layouts equal the C++ layout (checked by static_asserts in
-// src/core/gpu_types.cpp).
+// src/core/vulkan/gpu_scene.cpp).
 #ifndef SHADELAB_INTERFACE_H
 #define SHADELAB_INTERFACE_H
 
@@ -52,22 +52,20 @@ using mat4 = glm::mat4;
 #define SHADING_BLINN_PHONG 3
 #define SHADING_UNLIT 4  // constant colour: the timing floor the others are measured against
 
-#define LIGHT_POINT 0
-#define LIGHT_DIRECTIONAL 1
-
 // A light in eye space.
 struct GpuLight {
   vec4 position;     // point: eye-space position, w = 1; directional: unit eye-space direction *towards* the light, w = 0
   vec4 intensity;    // rgb = Ip per channel
   vec4 attenuation;  // f_att = 1 / (a + b d + c d^2): xyz = (a, b, c)
-  ivec4 type;        // x = LIGHT_POINT or LIGHT_DIRECTIONAL
 };
 
 struct FrameData {
   mat4 projection;
   vec4 ambient;      // rgb = Ia
-  ivec4 lightCount;  // x = point lights, y = directional lights (the shaders use the specialization constants)
-  GpuLight lights[MAX_LIGHTS];  // the point lights first, then the directional ones
+  // The point lights first, then the directional ones; how many of each is a
+  // specialization constant (SPEC_POINT_LIGHTS, SPEC_DIRECTIONAL_LIGHTS), so
+  // neither a count nor a light's type is uploaded.
+  GpuLight lights[MAX_LIGHTS];
   mat4 viewToWorld;  // inverse view rotation: eye-space directions to world space for the cube map
 };
 

@@ -10,7 +10,6 @@
 
 #include "core/trace/bvh.h"
 #include "core/base/errors.h"
-#include "core/vulkan/gpu_scene.h"
 #include "core/scene/lighting.h"
 #include "core/trace/ray.h"
 #include "core/trace/raytracer.h"
@@ -260,9 +259,9 @@ TEST(RayTracer, LocalShadingIsTheIlluminationEquationInEyeSpace) {
   const glm::vec3 traced =
       tracer.traceRay(ray, 1.0f, rays.viewer(), 0, 1.0f, TraceSettings{}, stats);
   const glm::mat4 view = scene.camera.viewMatrix();
-  const gpu::FrameData frame = makeFrameData(scene, view, glm::mat4(1.0f));
+  const Light lights[] = {lightInView(scene.lights[0], view), lightInView(scene.lights[1], view)};
   const glm::vec3 expected =
-      illuminate(frame, 2, glm::vec3(view * glm::vec4(hit->position, 1.0f)),
+      illuminate(scene.ambient, lights, glm::vec3(view * glm::vec4(hit->position, 1.0f)),
                  glm::mat3(view) * hit->shadingNormal, scene.objects[0].material, false);
   expectNear(traced, expected, 1e-5f);
   EXPECT_GT(expected.r, 0.2f);  // lit, not just ambient

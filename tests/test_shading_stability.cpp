@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <vector>
 
 #include "core/scene/lighting.h"
 #include "core/vulkan/gpu_scene.h"
@@ -59,14 +60,15 @@ glm::vec2 pixelCentre(uint32_t px, uint32_t py, uint32_t size, float halfSize) {
 }
 
 // The C++ equation for a world-space point and normal, in the eye space the
-// shaders light in (lights moved there by the same makeFrameData the renderer uses).
+// shaders light in (lights moved there by the same lightInView makeFrameData uses).
 glm::vec3 expectedColour(const Scene& scene, glm::vec3 worldPosition, glm::vec3 worldNormal,
                          const Material& material, bool blinn) {
   glm::mat4 view = scene.camera.viewMatrix();
-  gpu::FrameData frame = makeFrameData(scene, view, scene.camera.projectionMatrix(1.0f));
+  std::vector<Light> lights;
+  for (const Light& light : scene.lights) lights.push_back(lightInView(light, view));
   glm::vec3 position = glm::vec3(view * glm::vec4(worldPosition, 1.0f));
   glm::vec3 normal = glm::mat3(view) * worldNormal;  // the view is rigid
-  return illuminate(frame, uint32_t(scene.lights.size()), position, normal, material, blinn);
+  return illuminate(scene.ambient, lights, position, normal, material, blinn);
 }
 
 // Eight lights of both kinds with coloured intensities and attenuation, and a

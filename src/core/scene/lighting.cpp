@@ -1,7 +1,6 @@
 #include "core/scene/lighting.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 namespace shadelab {
@@ -46,25 +45,22 @@ glm::vec3 lightTerm(glm::vec3 N, glm::vec3 V, glm::vec3 L, float attenuation, gl
 
 }  // namespace
 
-glm::vec3 illuminate(const gpu::FrameData& frame, uint32_t lightCount, glm::vec3 position,
+glm::vec3 illuminate(glm::vec3 ambient, std::span<const Light> lights, glm::vec3 position,
                      glm::vec3 normal, const Material& material, bool blinn) {
-  assert(lightCount <= MAX_LIGHTS);
-  lightCount = std::min<uint32_t>(lightCount, MAX_LIGHTS);
   // Zero-length, NaN or infinite normals (bad input) light as ambient only,
   // never NaN: a NaN length fails both comparisons.
   const float lengthN2 = glm::dot(normal, normal);
   const glm::vec3 N = lengthN2 > 1e-40f && lengthN2 < 1e30f ? normal / std::sqrt(lengthN2)
                                                            : glm::vec3(0.0f);
   const glm::vec3 V = safeNormalize(-position);
-  glm::vec3 color = glm::vec3(frame.ambient) * material.ka;
+  glm::vec3 color = ambient * material.ka;
   // Lights in any order, each by its type (the shader relies on makeFrameData
   // putting point lights first; the equation does not care).
-  for (uint32_t i = 0; i < lightCount; ++i) {
-    const gpu::GpuLight& light = frame.lights[i];
+  for (const Light& light : lights) {
     glm::vec3 L;
     float attenuation = 1.0f;
-    if (light.type.x == LIGHT_POINT) {
-      const glm::vec3 toLight = glm::vec3(light.position) - position;
+    if (light.type == LightType::Point) {
+      const glm::vec3 toLight = light.position - position;
       const float d = glm::length(toLight);
       // A light exactly at the surface point has no direction: it lights nothing.
       L = safeNormalize(toLight);
@@ -72,11 +68,24 @@ glm::vec3 illuminate(const gpu::FrameData& frame, uint32_t lightCount, glm::vec3
           light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d;
       attenuation = denom > 0.0f ? 1.0f / denom : 0.0f;
     } else {
-      L = safeNormalize(glm::vec3(light.position));
+      L = safeNormalize(-light.direction);
     }
-    color += lightTerm(N, V, L, attenuation, glm::vec3(light.intensity), material, blinn);
+    color += lightTerm(N, V, L, attenuation, light.intensity, material, blinn);
   }
   return color;
+}
+
+Light lightInView(const Light& light, const glm::mat4& view) {
+  Light moved = light;
+  moved.position = glm::vec3(view * glm::vec4(light.position, 1.0f));
+  // Directions transform without translation. Worked out towards the light,
+  // the vector the shaders and illuminate() use, then negated: negating it
+  // back (makeFrameData, illuminate) is exact, zero components included, so
+  // GPU and CPU light with the same bits.
+  const glm::vec3 toward = glm::mat3(view) * -light.direction;
+  const float length = glm::length(toward);
+  moved.direction = -(length > 0.0f ? toward / length : glm::vec3(0.0f));
+  return moved;
 }
 
 }  // namespace shadelab

@@ -1,9 +1,11 @@
 #include "core/trace/raytracer.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 #include <thread>
 
@@ -317,13 +319,12 @@ Ray RayTracer::offsetRay(const SurfaceHit& hit, glm::vec3 direction, float epsil
   return {hit.position + side * epsilon * scale * hit.geometricNormal, direction};
 }
 
-// Phong at the hit with the unshadowed lights only: the lights go into the
-// same FrameData the shaders read, moved so the viewer sits at the origin,
-// which is where lighting.cpp (like the shader's eye space) takes V from.
+// Phong at the hit with the unshadowed lights only, moved so the viewer sits
+// at the origin, which is where lighting.cpp (like the shader's eye space)
+// takes V from. At most MAX_LIGHTS, as the shaders see.
 glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& material, glm::vec3 viewer,
                                   const TraceSettings& settings, TraceStats& stats) const {
-  gpu::FrameData frame{};
-  frame.ambient = glm::vec4(scene_.ambient, 0.0f);
+  std::array<Light, MAX_LIGHTS> lit;
   uint32_t visible = 0;
   const size_t count = std::min<size_t>(scene_.lights.size(), MAX_LIGHTS);
   for (size_t i = 0; i < count; ++i) {
@@ -345,14 +346,16 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
       passed = transmittance(shadow, point ? 1.0f : kInfinity);
       if (passed <= 0.0f) continue;
     }
-    gpu::GpuLight& out = frame.lights[visible++];
-    out.position = point ? glm::vec4(light.position - viewer, 1.0f) : glm::vec4(toLight, 0.0f);
-    out.type.x = point ? LIGHT_POINT : LIGHT_DIRECTIONAL;
-    out.intensity = glm::vec4(passed * light.intensity, 0.0f);
-    out.attenuation = glm::vec4(light.attenuation, 0.0f);
+    Light& out = lit[visible++];
+    out.type = light.type;
+    out.position = light.position - viewer;
+    out.direction = -toLight;  // unit length
+    out.intensity = passed * light.intensity;
+    out.attenuation = light.attenuation;
   }
-  return material.emissive + illuminate(frame, visible, hit.position - viewer, hit.shadingNormal,
-                                        material, settings.blinn);
+  return material.emissive + illuminate(scene_.ambient, std::span(lit.data(), visible),
+                                        hit.position - viewer, hit.shadingNormal, material,
+                                        settings.blinn);
 }
 
 Material RayTracer::materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const {

@@ -7,20 +7,21 @@
 #include <meshoptimizer.h>
 
 #include "core/scene/frustum.h"
+#include "core/scene/lighting.h"
 #include "core/scene/transform.h"
 #include "core/scene/uv_mapping.h"
 
 namespace shadelab {
 
 // The structs in shaders/interface.h must match std140/std430 exactly.
-static_assert(sizeof(gpu::GpuLight) == 64);
+// An array's stride is 16-byte aligned in std140: GpuLight's 48 bytes are.
+static_assert(sizeof(gpu::GpuLight) == 48);
 static_assert(offsetof(gpu::GpuLight, intensity) == 16);
-static_assert(offsetof(gpu::GpuLight, type) == 48);
+static_assert(offsetof(gpu::GpuLight, attenuation) == 32);
 static_assert(offsetof(gpu::FrameData, ambient) == 64);
-static_assert(offsetof(gpu::FrameData, lightCount) == 80);
-static_assert(offsetof(gpu::FrameData, lights) == 96);
-static_assert(offsetof(gpu::FrameData, viewToWorld) == 96 + 64 * MAX_LIGHTS);
-static_assert(sizeof(gpu::FrameData) == 96 + 64 * MAX_LIGHTS + 64);
+static_assert(offsetof(gpu::FrameData, lights) == 80);
+static_assert(offsetof(gpu::FrameData, viewToWorld) == 80 + 48 * MAX_LIGHTS);
+static_assert(sizeof(gpu::FrameData) == 80 + 48 * MAX_LIGHTS + 64);
 static_assert(offsetof(gpu::ObjectData, normalMatrix) == 64);
 static_assert(sizeof(gpu::ObjectData) == 128);
 static_assert(offsetof(gpu::DrawConstants, kd) == 16);
@@ -172,23 +173,13 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
   // The view is a rigid lookAt: its rotation's inverse is the transpose.
   frame.viewToWorld = glm::mat4(glm::transpose(glm::mat3(view)));
   LightLayout layout = lightLayoutOf(scene);
-  frame.lightCount = glm::ivec4(int(layout.point), int(layout.directional), 0, 0);
   uint32_t nextPoint = 0, nextDirectional = layout.point;
   for (size_t i = 0; i < layout.total(); ++i) {
-    const Light& light = scene.lights[i];
-    bool point = light.type == LightType::Point;
+    const Light light = lightInView(scene.lights[i], view);
+    const bool point = light.type == LightType::Point;
     gpu::GpuLight& out = frame.lights[point ? nextPoint++ : nextDirectional++];
-    if (point) {
-      out.position = view * glm::vec4(light.position, 1.0f);
-      out.type.x = LIGHT_POINT;
-    } else {
-      // Directions transform without translation; the shader wants the unit
-      // direction towards the light (zero stays zero: it lights nothing).
-      glm::vec3 toward = glm::mat3(view) * -light.direction;
-      float length = glm::length(toward);
-      out.position = glm::vec4(length > 0.0f ? toward / length : glm::vec3(0.0f), 0.0f);
-      out.type.x = LIGHT_DIRECTIONAL;
-    }
+    // The shader wants a directional light's unit direction *towards* it.
+    out.position = point ? glm::vec4(light.position, 1.0f) : glm::vec4(-light.direction, 0.0f);
     out.intensity = glm::vec4(light.intensity, 0.0f);
     out.attenuation = glm::vec4(light.attenuation, 0.0f);
   }

@@ -1,0 +1,2 @@
+// BREAKS: src/tools has no layer rule
+int main() { return 0; }
