@@ -105,6 +105,7 @@ struct Object {
 
 struct Scene {
   std::string name;
+  std::string description;     // one line, from a scene file's "description"
   Camera camera;
   glm::vec3 ambient{1.0f};     // Ia
   glm::vec3 background{0.0f};  // linear clear colour
