@@ -162,7 +162,7 @@ TEST_F(Cli, InfoNamesDeviceDriverAndVersion) {
 
 TEST_F(Cli, HelpSucceedsForEachCommand) {
   for (const char* command : {"--help", "render --help", "compare --help", "bench --help",
-                              "info --help", "trace --help", "view --help"}) {
+                              "info --help", "trace --help", "view --help", "scenes --help"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 0) << command << "\n" << r.output;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << command;
@@ -172,6 +172,46 @@ TEST_F(Cli, HelpSucceedsForEachCommand) {
 std::string readText(const std::string& path) {
   std::ifstream file(path);
   return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(Cli, ScenesListsEachBuiltInWithItsDescription) {
+  CommandResult r = run("scenes");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::string lines = "\n" + r.output;
+  for (const char* name : {"bump", "default", "dense", "env", "highlight", "mip-plane", "spheres",
+                           "teapot", "whitted", "zfight"})
+    EXPECT_NE(lines.find(std::string("\n") + name + " "), std::string::npos) << name;
+  EXPECT_NE(r.output.find("teapot     The Utah teapot"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 10) << "one line each, no more";
+}
+
+// The copy a user makes renders exactly as the built-in it came from.
+TEST_F(Cli, ScenesPrintWritesTheFileThatRendersLikeTheBuiltIn) {
+  for (std::string name : {"default", "bump"}) {
+    std::string copy = out(name + "-copy.json");
+    CommandResult printed = run("scenes --print " + name + " > " + copy);
+    ASSERT_EQ(printed.exitCode, 0) << readText(copy);
+    std::string asset = std::string(SHADELAB_ASSET_DIR) + "/scenes/" + name + ".json";
+    EXPECT_EQ(readText(copy), readText(asset)) << "the file in assets/scenes, byte for byte";
+    for (const auto& [scene, png] : {std::pair{name, name + "-builtin.png"},
+                                     std::pair{copy, name + "-copy.png"}}) {
+      CommandResult r = run("render " + scene + " --size 160x90 -o " + out(png));
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    shadelab::ImageU8 builtIn = shadelab::readImageU8(out(name + "-builtin.png"));
+    shadelab::ImageU8 fromCopy = shadelab::readImageU8(out(name + "-copy.png"));
+    EXPECT_EQ(fromCopy.width, 160u);
+    EXPECT_TRUE(fromCopy.pixels == builtIn.pixels) << name << ": the copy renders differently";
+  }
+}
+
+TEST_F(Cli, ScenesPrintUnknownNameIsAnInputError) {
+  CommandResult r = run("scenes --print no-such-scene");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("unknown built-in scene 'no-such-scene'"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("bump, default, dense"), std::string::npos) << "lists the names";
+  EXPECT_EQ(r.output.find('{'), std::string::npos) << "no JSON printed";
 }
 
 TEST_F(Cli, RenderLoadsJsonSceneFile) {

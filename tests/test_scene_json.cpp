@@ -237,6 +237,25 @@ TEST(SceneJson, EachTransformStep) {
   EXPECT_TRUE(mat4Near(transformOf("[]"), glm::mat4(1.0f)));
 }
 
+// Named axes are the elementary rotations bit for bit (the built-in scenes rely on it): at 90
+// degrees Rodrigues' formula about [1, 0, 0] gives 0.99999994, not 1, on the diagonal.
+TEST(SceneJson, NamedAxisIsTheExactElementaryRotation) {
+  float angle = glm::radians(90.0f);
+  EXPECT_EQ(transformOf(R"([{"rotate": {"axis": "x", "degrees": 90}}])"), rotationX(angle));
+  EXPECT_EQ(transformOf(R"([{"rotate": {"axis": "y", "degrees": 90}}])"), rotationY(angle));
+  EXPECT_EQ(transformOf(R"([{"rotate": {"axis": "z", "degrees": 90}}])"), rotationZ(angle));
+  EXPECT_NE(transformOf(R"([{"rotate": {"axis": [1, 0, 0], "degrees": 90}}])"), rotationX(angle));
+  glm::mat4 about =
+      transformOf(R"([{"rotate": {"axis": "z", "degrees": 90, "about": [1, 0, 0]}}])");
+  EXPECT_TRUE(vec3Near(apply(about, {2, 0, 0}), {1, 1, 0}));
+}
+
+TEST(SceneJson, DescriptionIsKept) {
+  EXPECT_EQ(parse(R"({"description": "a one-line summary", "objects": []})").description,
+            "a one-line summary");
+  EXPECT_EQ(parse(R"({"objects": []})").description, "");
+}
+
 TEST(SceneJson, ChildWorldMatrixIsParentWorldTimesLocal) {
   Scene scene = parse(R"({"objects": [
     {"name": "sun", "shape": "sphere",
@@ -344,8 +363,8 @@ const ErrorCase kErrorCases[] = {
   {"MissingObjects", "{}", {"scene.json: objects: missing, expected an array of objects"}},
   {"ObjectsNotAnArray", R"({"objects": {}})", {"objects: expected an array of objects, got {}"}},
   {"UnknownTopLevelField", noObjects(R"("colour": 1)"),
-   {"scene.json: colour: unknown field \"colour\", expected one of camera, ambient, background,"
-    " environment, lights, materials, objects"}},
+   {"scene.json: colour: unknown field \"colour\", expected one of description, camera, ambient,"
+    " background, environment, lights, materials, objects"}},
   {"UnknownObjectField", oneObject(R"("shape": "sphere", "colour": [1, 0, 0])"),
    {"objects[0].colour: unknown field \"colour\"", "material", "radius", "tessellation"}},
   {"MaterialOnAGroup", oneObject(R"("material": "x", "children": [{"shape": "box"}])"),
@@ -412,6 +431,10 @@ const ErrorCase kErrorCases[] = {
    {"camera.eye: expected an array of 3 numbers, got [1,2]"}},
   {"ZeroRotationAxis", boxSteps(R"({"scale": 2}, {"rotate": {"axis": [0, 0, 0], "degrees": 5}})"),
    {"objects[0].transform[1].rotate.axis: zero-length rotation axis"}},
+  {"UnknownAxisName", boxSteps(R"({"rotate": {"axis": "w", "degrees": 5}})"),
+   {R"(objects[0].transform[0].rotate.axis: unknown axis "w", expected one of x, y, z)"}},
+  {"DescriptionNotAString", R"({"description": 3, "objects": []})",
+   {"scene.json: description: expected a string, got 3"}},
   {"RotationWithoutDegrees", boxSteps(R"({"rotate": {"axis": [0, 1, 0]}})"),
    {"objects[0].transform[0].rotate.degrees: missing"}},
   {"ZeroScale", boxSteps(R"({"scale": [1, 0, 1]})"),

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   std::map<std::string, CommandRunner> commands = {
       {"render", addRenderCommand(app, global)}, {"compare", addCompareCommand(app, global)},
       {"bench", addBenchCommand(app, global)},   {"info", addInfoCommand(app, global)},
-      {"trace", addTraceCommand(app, global)},
+      {"trace", addTraceCommand(app, global)},   {"scenes", addScenesCommand(app, global)},
       {"view", addViewCommand(app, global)},
   };
   try {

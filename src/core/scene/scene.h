@@ -3,6 +3,7 @@
 // directional lights, and objects (a mesh, a transform and a material).
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -134,6 +135,7 @@ struct Object {
 
 struct Scene {
   std::string name;
+  std::string description;     // one line, from a scene file's "description"
   Camera camera;
   glm::vec3 ambient{1.0f};     // Ia
   glm::vec3 background{0.0f};  // linear clear colour
@@ -151,16 +153,20 @@ struct Scene {
   uint64_t triangleCount() const;
 };
 
-// Built-in scenes need no files. Throws InputError for an unknown name,
-// listing the names that exist.
+// Built-in scenes need no files: they are assets/scenes/<name>.json embedded
+// in the binary. Each throws InputError for an unknown name, listing the
+// names that exist.
 Scene builtinScene(const std::string& name);
-std::vector<std::string> builtinSceneNames();
+std::vector<std::string> builtinSceneNames();  // sorted
+std::string_view builtinSceneJson(const std::string& name);  // the file's text
+std::string builtinSceneDescription(const std::string& name);  // its one line
 // The `highlight` scene with its plane cut into quadsPerSide^2 quads.
 Scene highlightScene(uint32_t quadsPerSide);
-// The `zfight` scene: two large parallel planes kZFightGap apart, far from a
-// camera with this projection and near plane (the built-in one: perspective,
-// near 0.1). Unlit colours: the nearer plane kZFightNearColor, the farther
-// kZFightFarColor, listed first; black background.
+// The `zfight` scene with this projection and near plane (its file's:
+// perspective, near 0.1): two large parallel planes kZFightGap apart, far
+// from the camera. Unlit colours: the nearer plane kZFightNearColor, the
+// farther kZFightFarColor, listed first; black background. The constants
+// restate assets/scenes/zfight.json for the measurement (tests check both agree).
 inline constexpr float kZFightGap = 0.05f;
 inline constexpr glm::vec3 kZFightNearColor{1.0f, 0.0f, 0.0f};
 inline constexpr glm::vec3 kZFightFarColor{0.0f, 0.0f, 1.0f};

@@ -23,6 +23,7 @@
 //   ]
 // }
 //
+// description one line saying what the scene shows (a string; `shadelab scenes` lists it).
 // camera      eye [0, 2, 6], at [0, 0, 0], up [0, 1, 0] (non-zero, not parallel to at - eye,
 //             at != eye); projection "perspective" (default), "frustum" or "orthographic";
 //             fovy 45 degrees (perspective, 0 < fovy < 180); near 0.1, far 100 (0 < near < far);
@@ -125,6 +126,10 @@
 //   {"rotate": {"axis": [x, y, z], "degrees": a}}                     about the origin
 //   {"rotate": {"axis": [x, y, z], "degrees": a, "about": [x, y, z]}}  about the line through
 //   "about"
+//   {"rotate": {"axis": "x", "degrees": a}}  "x", "y" or "z": the elementary rotation R_x, R_y,
+//                                            R_z (entries exactly cos a, sin a, 0 and 1; an axis
+//                                            vector goes through Rodrigues' formula, whose
+//                                            diagonal can be 1 ulp from 1); "about" works too
 //   {"scale": [sx, sy, sz]} or {"scale": s}                             non-zero factors
 //   {"shear": {"xy": 0, "xz": 0, "yx": 0, "yz": 0, "zx": 0, "zy": 0}}  any subset of the six
 // Rotations are right-handed (counter-clockwise looking down the axis toward the origin);
@@ -366,14 +371,28 @@ ShapeDesc parseShape(const Field& object, const ShapeSpec& spec) {
   return shape;
 }
 
+// A coordinate axis named "x", "y" or "z" gives the textbook's R_x, R_y, R_z,
+// exact where Rodrigues' formula for [1, 0, 0] may round c + (1 - c) below 1.
 glm::mat4 parseRotation(const Field& field) {
   field.expectObject({"axis", "degrees", "about"});
-  Field axisField = field.required("axis", "the rotation axis [x, y, z]");
-  glm::vec3 axis = axisField.vec3();
-  if (glm::length(axis) == 0.0f) axisField.fail("zero-length rotation axis", "a non-zero vector");
+  Field axisField =
+      field.required("axis", "the rotation axis [x, y, z] or \"x\", \"y\", \"z\"");
   float angle = glm::radians(field.required("degrees", "the angle in degrees").number());
-  if (auto about = field.optional("about")) return rotationAboutPoint(about->vec3(), axis, angle);
-  return rotationAxis(axis, angle);
+  glm::mat4 rotation;
+  if (axisField.json().is_string()) {
+    size_t index = axisField.choice("axis", {"x", "y", "z"});
+    rotation = index == 0 ? rotationX(angle) : index == 1 ? rotationY(angle) : rotationZ(angle);
+  } else {
+    glm::vec3 axis = axisField.vec3();
+    if (glm::length(axis) == 0.0f)
+      axisField.fail("zero-length rotation axis", "a non-zero vector");
+    rotation = rotationAxis(axis, angle);
+  }
+  if (auto about = field.optional("about")) {
+    glm::vec3 point = about->vec3();
+    return translation(point) * rotation * translation(-point);
+  }
+  return rotation;
 }
 
 glm::mat4 parseScale(const Field& field) {
@@ -576,10 +595,11 @@ nlohmann::json parseDocument(std::string_view text, const std::string& source) {
 Scene parseSceneJson(std::string_view text, const std::string& sourceName) {
   nlohmann::json document = parseDocument(text, sourceName);
   Field root(document, "", sourceName);
-  root.expectObject(
-      {"camera", "ambient", "background", "environment", "lights", "materials", "objects"});
+  root.expectObject({"description", "camera", "ambient", "background", "environment", "lights",
+                     "materials", "objects"});
   Scene scene;
   scene.name = std::filesystem::path(sourceName).stem().string();
+  if (auto f = root.optional("description")) scene.description = f->string();
   if (auto f = root.optional("camera")) scene.camera = parseCamera(*f);
   if (auto f = root.optional("ambient")) scene.ambient = f->colour();
   if (auto f = root.optional("background")) scene.background = f->colour();
