@@ -320,7 +320,26 @@ bool Viewer::drawFrame() {
     swapchainStale_ = true;
   }
   ++framesDrawn_;
+  if (!keysAwaitingFrame_.empty()) reportKeyLatency(nowSeconds());
   return true;
+}
+
+// The frame just presented is the first to show the keys' effect; waiting for
+// it here (only when a key is being timed) gives the time it finished on the
+// device, which lavapipe reaches after the present call has returned.
+void Viewer::reportKeyLatency(double presented) {
+  RenderStats stats;
+  renderer_.finishFrames(stats);
+  pushBounded(deviceMs_, stats.deviceMs);
+  pushBounded(frameDeviceMs_, stats.frameDeviceMs);
+  pushBounded(wallMs_, stats.wallMs);
+  double finished = nowSeconds();
+  for (const auto& [name, handled] : keysAwaitingFrame_)
+    std::printf("view: key %s latency: %.2f ms to the next frame's present, %.2f ms to its end on "
+                "the device\n",
+                name.c_str(), (presented - handled) * 1e3, (finished - handled) * 1e3);
+  std::fflush(stdout);
+  keysAwaitingFrame_.clear();
 }
 
 void Viewer::finishSlotWork(SlotWork& work) {

@@ -32,6 +32,9 @@ struct ViewerOptions {
   uint32_t metricsInterval = 30;                  // frames between split-screen error readbacks
   RenderSettings initial;                         // model, MSAA, ...; the size follows the window
   float tessellation = 1.0f;                      // as render --tess; T and G change it
+  // --key-latency: print, per key, the wall time from handling it to the next
+  // frame's present and to that frame finishing on the device.
+  bool logKeyLatency = false;
 };
 
 class Viewer;
@@ -82,6 +85,7 @@ class Viewer {
   void autoTessellate();
   void reloadShaders();
   std::string nextScreenshotName() const;
+  void reportKeyLatency(double presented);
 
   Window& window_;
   const Context& context_;
@@ -117,6 +121,8 @@ class Viewer {
   bool messageIsError_ = false;
   std::string screenshotRequest_;
   double lastFrameTime_ = 0.0;
+  // Keys handled since the last presented frame, with when (--key-latency).
+  std::vector<std::pair<std::string, double>> keysAwaitingFrame_;
 
   size_t scriptPosition_ = 0;
   uint32_t framesToRun_ = 0;

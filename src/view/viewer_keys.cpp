@@ -2,6 +2,7 @@
 // feature is not in this build says so; when the feature lands as a
 // RenderSettings field, its binding toggles that field like W does.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -22,6 +23,11 @@ std::string formatMs(double ms) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.2f ms", ms);
   return text;
+}
+
+double nowSeconds() {
+  using Clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
 }
 
 std::string withThousands(uint64_t value) {
@@ -128,8 +134,11 @@ void Viewer::handleKey(int key) {
     quit_ = true;
     return;
   }
-  for (const KeyBinding& binding : keyBindings())
-    if (binding.key == key) return binding.action(*this);
+  for (const KeyBinding& binding : keyBindings()) {
+    if (binding.key != key) continue;
+    if (options_.logKeyLatency) keysAwaitingFrame_.push_back({binding.name, nowSeconds()});
+    return binding.action(*this);
+  }
 }
 
 void Viewer::setModel(ShadingModel model) {
