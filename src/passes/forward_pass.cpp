@@ -82,17 +82,22 @@ void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool texturedVariant : {false, true})
       for (bool blendedVariant : {false, true}) {
-        VariantKey key{ShadingModel(model), lights, target,     texturedVariant,
-                       blendedVariant,      false,  environment};
+        ForwardVariant key{.model = ShadingModel(model),
+                           .lights = lights,
+                           .target = target,
+                           .textured = texturedVariant,
+                           .blended = blendedVariant,
+                           .environment = environment};
         bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
         if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
       }
-  VariantKey wireframe{ShadingModel::Unlit, lights, target, false, false, true, false};
+  ForwardVariant wireframe{
+      .model = ShadingModel::Unlit, .lights = lights, .target = target, .wireframe = true};
   if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
     pipelines_[wireframe] = createPipeline(wireframe);
 }
 
-Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
+Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   const auto& [model, lights, target, textured, blended, wireframe, environment] = key;
   struct {
     int32_t shadingModel;
@@ -224,8 +229,12 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout t
   for (const DrawItem& draw : draws) {
     std::pair<bool, bool> variant{draw.textured, draw.transparent};
     if (bound != variant) {
-      auto pipeline = pipelines_.find(
-          {model, scene.lights, target, draw.textured, draw.transparent, false, environment});
+      auto pipeline = pipelines_.find({.model = model,
+                                       .lights = scene.lights,
+                                       .target = target,
+                                       .textured = draw.textured,
+                                       .blended = draw.transparent,
+                                       .environment = environment});
       assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
       bound = variant;
@@ -253,8 +262,8 @@ void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline =
-      pipelines_.find({ShadingModel::Unlit, scene.lights, target, false, false, true, false});
+  auto pipeline = pipelines_.find(
+      {.model = ShadingModel::Unlit, .lights = scene.lights, .target = target, .wireframe = true});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,

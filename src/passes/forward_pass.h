@@ -11,7 +11,6 @@
 #include <map>
 #include <span>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "core/vulkan/context.h"
@@ -28,6 +27,19 @@ struct TargetLayout {
   uint32_t samples = 1;
   DepthMode depth = DepthMode::D32F;
   auto operator<=>(const TargetLayout&) const = default;
+};
+
+// One forward pipeline: everything its specialization constants, stages and
+// fixed state are chosen by.
+struct ForwardVariant {
+  ShadingModel model = ShadingModel::Phong;
+  LightLayout lights;   // light counts and attenuation: specialization constants
+  TargetLayout target;  // sample count, depth format and compare op
+  bool textured = false;     // forward_textured.* stages, with the uv and tangent attributes
+  bool blended = false;      // transparent draws: "over" blending, no depth writes
+  bool wireframe = false;    // polygonMode LINE, depth-biased towards the eye
+  bool environment = false;  // SPEC_ENVIRONMENT: reflection and refraction of the cube
+  auto operator<=>(const ForwardVariant&) const = default;
 };
 
 class ForwardPass {
@@ -60,9 +72,7 @@ class ForwardPass {
   void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:
-  // model, lights, target (samples, depth), textured, blended, wireframe, environment term
-  using VariantKey = std::tuple<ShadingModel, LightLayout, TargetLayout, bool, bool, bool, bool>;
-  Pipeline createPipeline(const VariantKey& key) const;
+  Pipeline createPipeline(const ForwardVariant& key) const;
 
   const Context& context_;
   VkFormat colorFormat_;
@@ -70,7 +80,7 @@ class ForwardPass {
   DescriptorSetLayout materialSetLayout_;
   PipelineLayout layout_;
   std::map<std::string, ShaderModule> modules_;  // by source name: every one of shaderNames()
-  std::map<VariantKey, Pipeline> pipelines_;
+  std::map<ForwardVariant, Pipeline> pipelines_;
 };
 
 }  // namespace shadelab
