@@ -9,6 +9,7 @@
 
 #include "core/vulkan/barriers.h"
 #include "core/base/errors.h"
+#include "core/base/split_screen.h"
 #include "core/vulkan/vk_check.h"
 
 namespace shadelab {
@@ -303,11 +304,10 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
   // Split screen: equal columns, one shading model each, one camera.
   std::vector<ShadingModel> models = settings.splitModels;
   if (models.empty()) models.push_back(settings.shadingModel);
-  float columnWidth = float(width) / float(models.size());
+  std::vector<ScreenColumn> columns = splitColumns(width, uint32_t(models.size()));
   for (size_t i = 0; i < models.size(); ++i) {
-    float left = std::floor(columnWidth * float(i));
-    float right = std::floor(columnWidth * float(i + 1));
-    VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
+    VkViewport viewport{float(columns[i].left), 0.0f, float(columns[i].width), float(height),
+                        0.0f, 1.0f};
     // Opaque draws, the skybox where they left the far plane, then the
     // transparent draws, which write no depth, over both.
     auto firstTransparent = std::find_if(draws.begin(), draws.end(),

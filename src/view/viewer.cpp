@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/base/image.h"
+#include "core/base/split_screen.h"
 #include "core/base/stats.h"
 #include "core/vulkan/vk_check.h"
 #include "view/present_pass.h"
@@ -53,13 +54,6 @@ ImageU8 toImage(const Buffer& buffer, VkExtent2D extent, VkFormat format) {
     image.pixels[p * 4 + 3] = 255;  // presented opaque
   }
   return image;
-}
-
-ImageU8 crop(const ImageU8& image, uint32_t left, uint32_t width) {
-  ImageU8 part(width, image.height);
-  for (uint32_t y = 0; y < image.height; ++y)
-    for (uint32_t x = 0; x < width; ++x) part.set(x, y, image.at(left + x, y));
-  return part;
 }
 
 Semaphore createSemaphore(VkDevice device) {
@@ -363,15 +357,14 @@ void Viewer::computeSplitErrors(const SlotWork& work) {
   const RenderSettings& used = work.metricsSettings;
   ImageU8 frame = encodeSrgb8(unpackHalfImage(work.metrics.mapped(), used.width, used.height));
   const std::vector<ShadingModel>& models = used.splitModels;
-  float columnWidth = float(used.width) / float(models.size());
-  auto column = [&](size_t i, uint32_t width) {
-    return crop(frame, uint32_t(std::floor(columnWidth * float(i))), width);
-  };
+  std::vector<ScreenColumn> columns = splitColumns(used.width, uint32_t(models.size()));
+  auto column = [&](size_t i, uint32_t width) { return cropColumns(frame, columns[i].left, width); };
   auto phong = std::find(models.begin(), models.end(), ShadingModel::Phong);
   if (phong == models.end()) return;
   size_t reference = size_t(phong - models.begin());
-  // Columns differ by at most one pixel in width: compare the common part.
-  uint32_t width = uint32_t(std::floor(columnWidth));
+  // Columns differ by at most one pixel in width: compare the common part,
+  // the first column's width.
+  uint32_t width = columns[0].width;
   ImageU8 referenceImage = column(reference, width);
   bool first = splitErrors_.empty();
   splitErrors_.clear();

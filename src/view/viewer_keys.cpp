@@ -9,6 +9,7 @@
 
 #include "view/glsl_compiler.h"
 #include "core/scene/lod.h"
+#include "core/base/split_screen.h"
 #include "core/base/stats.h"
 #include "core/scene/texture.h"
 #include "view/viewer.h"
@@ -244,10 +245,12 @@ OverlayText Viewer::overlayText() const {
     text.status.push_back(line);
   }
   text.status.push_back("H help");
-  float columnWidth = float(extent.width) / float(views);
-  for (size_t i = 0; i < settings_.splitModels.size(); ++i)
-    text.columnLabels.push_back({std::floor(columnWidth * float(i)),
-                                 std::string(shadingModelName(settings_.splitModels[i]))});
+  if (!settings_.splitModels.empty()) {
+    std::vector<ScreenColumn> columns = splitColumns(extent.width, uint32_t(views));
+    for (size_t i = 0; i < views; ++i)
+      text.columnLabels.push_back({float(columns[i].left),
+                                   std::string(shadingModelName(settings_.splitModels[i]))});
+  }
   text.message = message_;
   text.messageIsError = messageIsError_;
   if (helpVisible_) {
