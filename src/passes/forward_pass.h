@@ -33,13 +33,25 @@ struct TargetLayout {
 // fixed state are chosen by.
 struct ForwardVariant {
   ShadingModel model = ShadingModel::Phong;
-  LightLayout lights;   // light counts and attenuation: specialization constants
-  TargetLayout target;  // sample count, depth format and compare op
+  LightLayout lights;        // light counts and attenuation: specialization constants
+  TargetLayout target;       // sample count, depth format and compare op
   bool textured = false;     // forward_textured.* stages, with the uv and tangent attributes
   bool blended = false;      // transparent draws: "over" blending, no depth writes
   bool wireframe = false;    // polygonMode LINE, depth-biased towards the eye
   bool environment = false;  // SPEC_ENVIRONMENT: reflection and refraction of the cube
   auto operator<=>(const ForwardVariant&) const = default;
+};
+
+// What one frame's forward draws are recorded with, besides the draws.
+struct ForwardFrame {
+  TargetLayout target;
+  VkDescriptorSet frameSet = VK_NULL_HANDLE;  // set 0
+  // Set 1 per DrawItem::material, for the frame's filter (SceneTextures).
+  std::span<const VkDescriptorSet> materialSets;
+  bool environment = false;  // the variants with the environment term
+  // Applied to the textured draws' TEXTURE_* push-constant flags per draw.
+  bool bump = true;      // false: normal and height maps ignored
+  bool mipTint = false;  // diffuse texels tinted by mip level
 };
 
 class ForwardPass {
@@ -58,17 +70,16 @@ class ForwardPass {
   // Records `draws` (visibleDraws: opaque first, then transparent ones, which
   // blend over what is drawn) inside an active dynamic-rendering scope; sets
   // its own viewport.
-  void record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
-              VkDescriptorSet frameSet, const GpuScene& scene, std::span<const DrawItem> draws,
-              const VkViewport& viewport, bool environment = false) const;
+  void record(VkCommandBuffer cmd, ShadingModel model, const ForwardFrame& frame,
+              const GpuScene& scene, std::span<const DrawItem> draws,
+              const VkViewport& viewport) const;
   // Triangle edges of `draws` over what record() drew (polygonMode LINE,
   // depth-biased towards the eye); a no-op without fillModeNonSolid.
-  void recordWireframe(VkCommandBuffer cmd, TargetLayout target, VkDescriptorSet frameSet,
-                       const GpuScene& scene, std::span<const DrawItem> draws,
-                       const VkViewport& viewport) const;
+  void recordWireframe(VkCommandBuffer cmd, const ForwardFrame& frame, const GpuScene& scene,
+                       std::span<const DrawItem> draws, const VkViewport& viewport) const;
 
   static std::vector<std::string> shaderNames();
-  // New SPIR-V by source name; drops every pipeline (prepare() rebuilds them).
+  // New SPIR-V by source name; rebuilds every pipeline prepared so far.
   void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:

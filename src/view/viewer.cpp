@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "core/base/errors.h"
 #include "core/base/image.h"
 #include "core/base/split_screen.h"
 #include "core/base/stats.h"
@@ -72,18 +73,20 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
       options_(options),
       surface_(context.instance(), window.createSurface(context.instance())),
       renderer_(context),
-      gpuScene_(renderer_.upload(scene_, options.initial.textures, options.initial.environment)),
       swapchain_(context, surface_.get(), options.presentMode),
       sceneCamera_(scene_.camera),
       camera_(scene_.camera),
       settings_(options.initial),
       tessellation_(options.tessellation) {
-  if (tessellation_ != 1.0f) {
-    scene_.retessellate(tessellation_);
-    gpuScene_ = renderer_.upload(scene_, settings_.textures, settings_.environment);
-  }
-  for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
+  if (tessellation_ != 1.0f) scene_.retessellate(tessellation_);
   glm::ivec2 size = window.framebufferSize();
+  if (size.x > 0 && size.y > 0) {
+    settings_.width = uint32_t(size.x);
+    settings_.height = uint32_t(size.y);
+  }
+  // Settings the device cannot draw are an InputError here, before any frame.
+  uploadScene();
+  for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
   swapchain_.recreate({uint32_t(size.x), uint32_t(size.y)});
   overlay_ = std::make_unique<Overlay>(context, swapchain_.format(), swapchain_.minImageCount(),
                                        std::max(3u, swapchain_.imageCount()));
@@ -137,6 +140,40 @@ void Viewer::run() {
       median(frameDevice), median(wall));
   std::printf("view: swapchain built %u times (%u out of date, %u suboptimal)\n", swapchainBuilds_,
               outOfDate_, suboptimal_);
+  std::printf("view: %u scene uploads (geometry, textures, environment)\n",
+              renderer_.uploadCount());
+}
+
+void Viewer::uploadScene() {
+  gpuScene_ = renderer_.upload(scene_, {.environmentCube = true});
+  renderer_.applyFrameSettings(gpuScene_, settings_);
+}
+
+bool Viewer::applySettings(const FrameSettings& next) {
+  try {
+    renderer_.applyFrameSettings(gpuScene_, next);
+  } catch (const InputError& error) {
+    say(error.what(), true);
+    return false;
+  }
+  settings_ = next;
+  return true;
+}
+
+// The frame follows the swapchain's size. A window narrower than the split
+// screen's columns cannot show them: split screen goes off, saying why.
+bool Viewer::followSwapchainSize() {
+  VkExtent2D extent = swapchain_.extent();
+  if (extent.width == settings_.width && extent.height == settings_.height) return true;
+  FrameSettings resized = settings_;
+  resized.width = extent.width;
+  resized.height = extent.height;
+  if (applySettings(resized)) return true;
+  resized.splitModels.clear();
+  if (!applySettings(resized)) return false;
+  splitErrors_.clear();
+  say("split screen off: the window is narrower than its columns", true);
+  return true;
 }
 
 bool Viewer::advanceScript() {
@@ -248,7 +285,7 @@ bool Viewer::drawFrame() {
   if (swapchainStale_ || !swapchain_.valid() || int(current.width) != size.x ||
       int(current.height) != size.y)
     recreateSwapchain();
-  if (!swapchain_.valid() || swapchainStale_) return false;
+  if (!swapchain_.valid() || swapchainStale_ || !followSwapchainSize()) return false;
 
   uint32_t slot = renderer_.frameSlot();
   RenderStats stats;
@@ -271,12 +308,10 @@ bool Viewer::drawFrame() {
   }
 
   VkExtent2D extent = swapchain_.extent();
-  settings_.width = extent.width;
-  settings_.height = extent.height;
   scene_.camera = camera_.camera();
   VkCommandBuffer cmd = renderer_.beginFrame();
   RenderStats counts;
-  renderer_.recordScene(gpuScene_, scene_, settings_, counts);
+  renderer_.recordScene(gpuScene_, scene_, counts);
   submittedTriangles_ = counts.triangles;
 
   SlotWork& work = slotWork_[slot];
@@ -329,9 +364,10 @@ void Viewer::reportKeyLatency(double presented) {
   pushBounded(wallMs_, stats.wallMs);
   double finished = nowSeconds();
   for (const auto& [name, handled] : keysAwaitingFrame_)
-    std::printf("view: key %s latency: %.2f ms to the next frame's present, %.2f ms to its end on "
-                "the device\n",
-                name.c_str(), (presented - handled) * 1e3, (finished - handled) * 1e3);
+    std::printf(
+        "view: key %s latency: %.2f ms to the next frame's present, %.2f ms to its end on "
+        "the device\n",
+        name.c_str(), (presented - handled) * 1e3, (finished - handled) * 1e3);
   std::fflush(stdout);
   keysAwaitingFrame_.clear();
 }
@@ -354,11 +390,13 @@ void Viewer::finishSlotWork(SlotWork& work) {
 // Each split-screen column against the Phong column: the same camera and
 // view, so the difference is the shading model's alone.
 void Viewer::computeSplitErrors(const SlotWork& work) {
-  const RenderSettings& used = work.metricsSettings;
+  const FrameSettings& used = work.metricsSettings;
   ImageU8 frame = encodeSrgb8(unpackHalfImage(work.metrics.mapped(), used.width, used.height));
   const std::vector<ShadingModel>& models = used.splitModels;
   std::vector<ScreenColumn> columns = splitColumns(used.width, uint32_t(models.size()));
-  auto column = [&](size_t i, uint32_t width) { return cropColumns(frame, columns[i].left, width); };
+  auto column = [&](size_t i, uint32_t width) {
+    return cropColumns(frame, columns[i].left, width);
+  };
   auto phong = std::find(models.begin(), models.end(), ShadingModel::Phong);
   if (phong == models.end()) return;
   size_t reference = size_t(phong - models.begin());
