@@ -20,7 +20,7 @@ constexpr uint32_t kWidth = 320;
 constexpr uint32_t kHeight = 180;
 
 RenderSettings settingsFor(uint32_t width, uint32_t height, ShadingModel model, bool bump = true) {
-  RenderSettings settings{width, height, model, 1};
+  RenderSettings settings{width, height, model};
   settings.textures.bump = bump;
   return settings;
 }

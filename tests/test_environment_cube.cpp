@@ -82,7 +82,7 @@ TEST_F(EnvironmentCubeTest, SkyboxShowsEachPixelsViewDirection) {
   const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   for (glm::vec3 axis : axes) {
     Scene scene = skyboxOnly(environment, axis, 60.0f);
-    ImageRgba image = renderer().renderToImage(scene, {33, 33, ShadingModel::Phong, 1}).image;
+    ImageRgba image = renderer().renderToImage(scene, {33, 33, ShadingModel::Phong}).image;
     float worst = 0.0f;
     for (uint32_t y = 0; y < 33; y += 4)
       for (uint32_t x = 0; x < 33; x += 4)
@@ -110,7 +110,7 @@ TEST_F(EnvironmentCubeTest, UploadedFacesKeepLayerAndOrientation) {
   const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   for (uint32_t face = 0; face < 6; ++face) {
     Scene scene = skyboxOnly(environment, axes[face], 50.0f);
-    ImageRgba image = renderer().renderToImage(scene, {32, 32, ShadingModel::Phong, 1}).image;
+    ImageRgba image = renderer().renderToImage(scene, {32, 32, ShadingModel::Phong}).image;
     for (uint32_t y = 4; y < 32; y += 8)
       for (uint32_t x = 4; x < 32; x += 8) {
         CubeCoordinate want = cubeCoordinate(pixelRay(scene.camera, 32, 32, x, y));
@@ -213,7 +213,7 @@ TEST_F(EnvironmentCubeTest, SeamMeasureCatchesMirroredFaces) {
 // 49..55), where each face is filtered on its own.
 float skyboxEdgeRatio(const Environment& environment, Renderer& renderer) {
   Scene scene = skyboxOnly(environment, glm::normalize(glm::vec3(1, 0, -1)), 20.0f);
-  ImageRgba image = renderer.renderToImage(scene, {64, 64, ShadingModel::Phong, 1}).image;
+  ImageRgba image = renderer.renderToImage(scene, {64, 64, ShadingModel::Phong}).image;
   float worst = 0.0f;
   auto step = [&](uint32_t x, uint32_t y) {
     glm::vec4 d = image.at(x + 1, y) - image.at(x, y);

@@ -47,7 +47,7 @@ TEST_F(EnvironmentShading, ConstantEnvironmentTimesReflectivityInEveryLitModel) 
   for (ShadingModel model :
        {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong, ShadingModel::BlinnPhong}) {
     for (uint32_t samples : {1u, 4u}) {
-      RenderSettings settings{160, 90, model, 1};
+      RenderSettings settings{160, 90, model};
       settings.msaaSamples = samples;
       ImageRgba image = renderer().renderToImage(scene, settings).image;
       // Sphere centres project to x = 80 -+ 29 (fovy 45 at distance 6), radius
@@ -111,7 +111,7 @@ class MirrorFloor : public GpuTest {
 
 TEST_F(MirrorFloor, ReflectsTheWorldSpaceMirrorDirection) {
   ImageRgba image =
-      renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong, 1}).image;
+      renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong}).image;
   auto [worst, count] = worstOver(
       image, [&](glm::vec3 ray) { return encodeDirection(reflectionDirection(up, -ray)); });
   EXPECT_GT(count, 200);
@@ -135,7 +135,7 @@ TEST_F(MirrorFloor, TotalInternalReflectionFallsBackToReflection) {
   scene.objects[0].material = environmentOnly(0.0f, 1.0f);
   scene.objects[0].material.ior = 0.8f;
   ImageRgba image =
-      renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong, 1}).image;
+      renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong}).image;
   for (float value : image.pixels) ASSERT_TRUE(std::isfinite(value));
   int totallyReflected = 0, transmitted = 0;
   auto [worst, count] = worstOver(
@@ -161,13 +161,13 @@ TEST_F(MirrorFloor, TotalInternalReflectionFallsBackToReflection) {
 
 TEST_F(EnvironmentShading, EnvOffIsTheBackgroundOnlyRender) {
   Scene scene = builtinScene("env");
-  RenderSettings off{160, 90, ShadingModel::Phong, 1};
+  RenderSettings off{160, 90, ShadingModel::Phong};
   off.environment = false;
   Scene without = scene;
   without.environment = Environment{};
   ImageU8 a = render(scene, off);
-  EXPECT_EQ(compareImages(a, render(without, {160, 90, ShadingModel::Phong, 1})).maxDifference, 0);
-  EXPECT_GT(compareImages(a, render(scene, {160, 90, ShadingModel::Phong, 1})).rmse, 5.0);
+  EXPECT_EQ(compareImages(a, render(without, {160, 90, ShadingModel::Phong})).maxDifference, 0);
+  EXPECT_GT(compareImages(a, render(scene, {160, 90, ShadingModel::Phong})).rmse, 5.0);
 }
 
 // The skybox fills exactly what the depth buffer still holds at its cleared
@@ -176,7 +176,7 @@ TEST_F(EnvironmentShading, EnvOffIsTheBackgroundOnlyRender) {
 // background-only render.
 TEST_F(EnvironmentShading, EveryDepthModeDrawsTheSameSkybox) {
   Scene scene = builtinScene("env");
-  RenderSettings settings{160, 90, ShadingModel::Phong, 1};
+  RenderSettings settings{160, 90, ShadingModel::Phong};
   ImageU8 reference = render(scene, settings);
   RenderSettings off = settings;
   off.environment = false;
@@ -195,7 +195,7 @@ TEST_F(EnvironmentShading, ChangedEnvironmentIsRebuiltUnchangedIsReused) {
   Scene scene = builtinScene("env");
   Scene brighter = scene;
   brighter.environment.intensity = 1.5f;
-  RenderSettings settings{96, 54, ShadingModel::Phong, 1};
+  RenderSettings settings{96, 54, ShadingModel::Phong};
   ImageU8 first = render(scene, settings);
   ImageU8 changed = render(brighter, settings);
   ImageU8 again = render(scene, settings);
@@ -204,7 +204,7 @@ TEST_F(EnvironmentShading, ChangedEnvironmentIsRebuiltUnchangedIsReused) {
 }
 
 RenderSettings golden(ShadingModel model, uint32_t samples = 1) {
-  RenderSettings settings{320, 180, model, 1};
+  RenderSettings settings{320, 180, model};
   settings.msaaSamples = samples;
   return settings;
 }

@@ -29,7 +29,7 @@ TEST_F(GltfRender, EverySharedModelRendersInView) {
   if (models.empty()) GTEST_SKIP() << "no models in " << sharedAssetsDir();
   for (const std::filesystem::path& model : models) {
     Scene scene = loadScene(model.string());
-    RenderResult result = renderer().renderToImage(scene, {160, 90, ShadingModel::Phong, 1});
+    RenderResult result = renderer().renderToImage(scene, {160, 90, ShadingModel::Phong});
     ImageU8 image = encodeSrgb8(result.image);
     // The framed model covers a good part of the frame and nothing is culled.
     EXPECT_GT(pixelsUnlike(image, image.at(0, 0)), 160u * 90u / 50u) << model;
@@ -47,7 +47,7 @@ Scene sharedModel(const std::string& file) {
 TEST_F(GltfRender, SharedModelsMatchGoldens) {
   if (!std::filesystem::exists(sharedAssetsDir() / "models"))
     GTEST_SKIP() << "no models in " << sharedAssetsDir();
-  RenderSettings settings{320, 180, ShadingModel::Phong, 1};
+  RenderSettings settings{320, 180, ShadingModel::Phong};
   EXPECT_TRUE(matchesGolden("gltf-suzanne", render(sharedModel("suzanne.gltf"), settings)));
   EXPECT_TRUE(matchesGolden("gltf-color-teapot-spheres",
                             render(sharedModel("color_teapot_spheres.gltf"), settings)));
@@ -56,7 +56,7 @@ TEST_F(GltfRender, SharedModelsMatchGoldens) {
 TEST_F(GltfRender, ComparisonRejectsADarkerMaterialOrAMovedNode) {
   if (!std::filesystem::exists(sharedAssetsDir() / "models"))
     GTEST_SKIP() << "no models in " << sharedAssetsDir();
-  RenderSettings settings{320, 180, ShadingModel::Phong, 1};
+  RenderSettings settings{320, 180, ShadingModel::Phong};
   Scene metallic = sharedModel("suzanne.gltf");
   metallic.objects[0].material.kd *= 0.8f;  // as metallic 0.2 would give
   EXPECT_FALSE(matchesImage(loadGolden("gltf-suzanne"), render(metallic, settings)));
@@ -67,7 +67,7 @@ TEST_F(GltfRender, ComparisonRejectsADarkerMaterialOrAMovedNode) {
 
 TEST_F(GltfRender, GltfPlacedInASceneFileMatchesGolden) {
   std::string path = std::string(SHADELAB_TEST_DATA_DIR) + "/gltf_in_scene.json";
-  RenderSettings settings{320, 180, ShadingModel::Phong, 1};
+  RenderSettings settings{320, 180, ShadingModel::Phong};
   EXPECT_TRUE(matchesGolden("gltf-in-scene", render(loadScene(path), settings)));
   Scene shifted = loadScene(path);
   for (size_t i = 1; i < shifted.objects.size(); ++i)  // the glTF's, not the floor
@@ -82,7 +82,7 @@ TEST_F(GltfRender, TextureAppearsTheWayUpGltfMeans) {
   std::string path = std::string(SHADELAB_TEST_DATA_DIR) + "/textured.gltf";
   Scene scene = loadScene(path);
   scene.objects[0].material.transparency = 0.0f;  // the texture's own colours
-  RenderSettings settings{160, 120, ShadingModel::Unlit, 1};
+  RenderSettings settings{160, 120, ShadingModel::Unlit};
   ImageU8 image = render(scene, settings);
   EXPECT_TRUE(matchesGolden("gltf-textured", image));
   for (Vertex& vertex : scene.meshes[0].vertices) vertex.uv.y = 1.0f - vertex.uv.y;
@@ -103,7 +103,7 @@ TEST_F(GltfRender, CullingChangesNoPixelButReducesDraws) {
                       translation({0.0f, 0.0f, -3.0f});
     scene.objects.push_back({"ring", mesh, place, Material{}});
   }
-  RenderSettings culling{320, 180, ShadingModel::Phong, 1};
+  RenderSettings culling{320, 180, ShadingModel::Phong};
   RenderSettings everything = culling;
   everything.frustumCulling = false;
   RenderResult culled = renderer().renderToImage(scene, culling);
@@ -162,11 +162,11 @@ Scene translucentQuads(const std::vector<int>& order) {
 
 TEST_F(GltfRender, TranslucentObjectsBlendBackToFrontInAnyListedOrder) {
   std::vector<int> order = {0, 1, 2};
-  ImageU8 first = render(translucentQuads(order), {320, 180, ShadingModel::Phong, 1});
+  ImageU8 first = render(translucentQuads(order), {320, 180, ShadingModel::Phong});
   EXPECT_TRUE(matchesGolden("translucent-quads", first));
   int permutations = 0;
   while (std::next_permutation(order.begin(), order.end())) {
-    ImageU8 image = render(translucentQuads(order), {320, 180, ShadingModel::Phong, 1});
+    ImageU8 image = render(translucentQuads(order), {320, 180, ShadingModel::Phong});
     EXPECT_EQ(compareImages(first, image).maxDifference, 0) << order[0] << order[1] << order[2];
     ++permutations;
   }
@@ -179,7 +179,7 @@ TEST_F(GltfRender, ComparisonRejectsLayersInAnotherDepthOrder) {
   Scene scene = translucentQuads({0, 1, 2});
   std::swap(scene.objects[1].material, scene.objects[3].material);
   EXPECT_FALSE(matchesImage(loadGolden("translucent-quads"),
-                            render(scene, {320, 180, ShadingModel::Phong, 1})));
+                            render(scene, {320, 180, ShadingModel::Phong})));
 }
 
 struct LodRow {
@@ -212,7 +212,7 @@ constexpr float kLodErrorPixels = 0.5f;
 TEST_F(GltfRender, SimplificationTableForTheSharedModels) {
   std::vector<std::filesystem::path> models = sharedModels();
   if (models.empty()) GTEST_SKIP() << "no models in " << sharedAssetsDir();
-  RenderSettings settings{kLodWidth, kLodHeight, ShadingModel::Phong, 1};
+  RenderSettings settings{kLodWidth, kLodHeight, ShadingModel::Phong};
   std::vector<LodRow> rows;
   for (const std::filesystem::path& model : models) {
     Scene full = loadScene(model.string());
@@ -233,7 +233,7 @@ TEST_F(GltfRender, SimplificationTableForTheSharedModels) {
 
 // --tess auto at 0.5 px against the same scene at 4x its base tessellation.
 TEST_F(GltfRender, AutoTessellationTableForTheBuiltinScenes) {
-  RenderSettings settings{kLodWidth, kLodHeight, ShadingModel::Phong, 1};
+  RenderSettings settings{kLodWidth, kLodHeight, ShadingModel::Phong};
   std::vector<LodRow> rows;
   for (const char* name : {"default", "spheres", "teapot"}) {
     Scene reference = builtinScene(name);

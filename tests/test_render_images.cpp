@@ -17,7 +17,7 @@ constexpr uint32_t kWidth = 320;
 constexpr uint32_t kHeight = 180;
 
 RenderSettings small(ShadingModel model = ShadingModel::Phong) {
-  return {kWidth, kHeight, model, 1};
+  return {kWidth, kHeight, model};
 }
 
 // Every shading model on each scene with a golden: tests/golden/<scene>-<mode>.png.
@@ -168,7 +168,7 @@ TEST_F(RenderImages, DepthTestMakesDrawOrderIrrelevant) {
 
 TEST_F(RenderImages, FrameStatisticsCoverEveryFrame) {
   Scene scene = builtinScene("default");
-  RenderResult result = renderer().renderToImage(scene, {64, 64, ShadingModel::Phong, 7});
+  RenderResult result = renderer().renderToImage(scene, {{64, 64, ShadingModel::Phong}, 7});
   ASSERT_EQ(result.stats.deviceMs.size(), 7u);
   ASSERT_EQ(result.stats.wallMs.size(), 7u);
   for (double ms : result.stats.deviceMs) EXPECT_GT(ms, 0.0);
@@ -178,10 +178,79 @@ TEST_F(RenderImages, FrameStatisticsCoverEveryFrame) {
 
 TEST_F(RenderImages, ImpossibleSizesAreInputErrors) {
   Scene scene = builtinScene("default");
-  EXPECT_THROW(renderer().renderToImage(scene, {0, 10, ShadingModel::Phong, 1}), InputError);
-  EXPECT_THROW(renderer().renderToImage(scene, {100000, 10, ShadingModel::Phong, 1}), InputError);
-  RenderResult tiny = renderer().renderToImage(scene, {1, 1, ShadingModel::Phong, 1});
+  EXPECT_THROW(renderer().renderToImage(scene, {0, 10, ShadingModel::Phong}), InputError);
+  EXPECT_THROW(renderer().renderToImage(scene, {100000, 10, ShadingModel::Phong}), InputError);
+  RenderResult tiny = renderer().renderToImage(scene, {1, 1, ShadingModel::Phong});
   EXPECT_EQ(tiny.image.width, 1u);
+}
+
+// Per-frame settings reach a frame at record time: switching them on one
+// upload draws exactly what a fresh renderToImage with those settings draws,
+// and settings the device cannot draw are refused when applied, leaving the
+// applied ones in place.
+class FrameSettingsOnOneUpload : public GpuTest {
+ protected:
+  ImageU8 recordFrame(Renderer& renderer, const GpuScene& gpuScene, const Scene& scene) {
+    const FrameSettings& settings = renderer.frameSettings();
+    Buffer readback(context(), VkDeviceSize(settings.width) * settings.height * 8,
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
+    RenderStats stats;
+    renderer.waitForFrame(stats);
+    renderer.beginFrame();
+    renderer.recordScene(gpuScene, scene, stats);
+    renderer.recordReadback(readback);
+    renderer.submitFrame();
+    renderer.finishFrames(stats);
+    return encodeSrgb8(unpackHalfImage(readback.mapped(), settings.width, settings.height));
+  }
+  // Applies each of `variants` in turn to one upload of `scene`.
+  void expectFreshRenders(const Scene& scene, const std::vector<RenderSettings>& variants) {
+    Renderer renderer(context());
+    GpuScene gpuScene = renderer.upload(scene);
+    for (const RenderSettings& settings : variants) {
+      renderer.applyFrameSettings(gpuScene, settings);
+      ImageU8 switched = recordFrame(renderer, gpuScene, scene);
+      EXPECT_EQ(compareImages(render(scene, settings), switched).maxDifference, 0) << scene.name;
+    }
+    EXPECT_EQ(renderer.uploadCount(), 1u);
+  }
+};
+
+TEST_F(FrameSettingsOnOneUpload, TextureAndEnvironmentSwitchesMatchFreshRenders) {
+  RenderSettings base{160, 90, ShadingModel::Phong};
+  RenderSettings noBump = base, tint = base, nearest = base, noEnvironment = base;
+  noBump.textures.bump = false;
+  tint.textures.mipTint = true;
+  nearest.textures.filterOverride = TextureFilter::Nearest;
+  noEnvironment.environment = false;
+  expectFreshRenders(builtinScene("bump"), {noBump, base, noBump});
+  expectFreshRenders(builtinScene("mip-plane"), {tint, nearest, base, tint});
+  expectFreshRenders(builtinScene("env"), {noEnvironment, base, noEnvironment});
+  // Must-fail twin: the switches change the image, so a stale one is caught.
+  EXPECT_GT(compareImages(render(builtinScene("bump"), base), render(builtinScene("bump"), noBump))
+                .maxDifference,
+            0);
+}
+
+TEST_F(FrameSettingsOnOneUpload, RefusedSettingsLeaveTheAppliedOnes) {
+  Scene scene = builtinScene("default");
+  Renderer renderer(context());
+  GpuScene gpuScene = renderer.upload(scene);
+  RenderSettings settings{96, 54, ShadingModel::Gouraud};
+  renderer.applyFrameSettings(gpuScene, settings);
+  FrameSettings badMsaa = settings, badSize = settings, badSplit = settings;
+  badMsaa.msaaSamples = 3;
+  badSize.width = 0;
+  badSplit.width = 3;
+  badSplit.splitModels = {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
+                          ShadingModel::BlinnPhong};
+  for (const FrameSettings& bad : {badMsaa, badSize, badSplit})
+    EXPECT_THROW(renderer.applyFrameSettings(gpuScene, bad), InputError);
+  EXPECT_EQ(renderer.frameSettings().msaaSamples, 1u);
+  EXPECT_EQ(renderer.frameSettings().width, 96u);
+  EXPECT_EQ(compareImages(render(scene, settings), recordFrame(renderer, gpuScene, scene))
+                .maxDifference,
+            0);
 }
 
 }  // namespace

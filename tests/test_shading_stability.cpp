@@ -132,7 +132,7 @@ TEST_P(EquationAgreement, GpuColourMatchesCppEquationWithinOneLevel) {
   Scene scene = gridScene(kGridMaterial);
   addEightLights(scene);
   ImageRgba image =
-      renderer().renderToImage(scene, {kGridImage, kGridImage, model, 1}).image;
+      renderer().renderToImage(scene, {kGridImage, kGridImage, model}).image;
   bool blinn = model == ShadingModel::BlinnPhong;
 
   glm::vec3 expected, actual;
@@ -178,8 +178,8 @@ INSTANTIATE_TEST_SUITE_P(LitModels, EquationAgreement, ::testing::ValuesIn(kLitM
 // Gouraud evaluates the equation only at the vertices, so a highlight inside
 // one large triangle is lost; subdividing the plane brings it back.
 TEST_F(ShadingStability, GouraudLosesTheHighlightUntilThePlaneIsSubdivided) {
-  RenderSettings phong{320, 180, ShadingModel::Phong, 1};
-  RenderSettings gouraud{320, 180, ShadingModel::Gouraud, 1};
+  RenderSettings phong{320, 180, ShadingModel::Phong};
+  RenderSettings gouraud{320, 180, ShadingModel::Gouraud};
   float phongPeak = peakLuminance(renderer().renderToImage(highlightScene(1), phong).image);
   uint32_t recovered = 0;
   for (uint32_t quads : {1u, 2u, 4u, 8u, 16u, 32u, 64u}) {
@@ -269,7 +269,7 @@ FacetCheck checkFacets(const Scene& scene, const ImageRgba& image) {
 TEST_F(ShadingStability, FlatGivesEachTriangleExactlyOneColour) {
   Scene scene = coarseSphere(1);  // 80 triangles
   FacetCheck flat =
-      checkFacets(scene, renderer().renderToImage(scene, {480, 360, ShadingModel::Flat, 1}).image);
+      checkFacets(scene, renderer().renderToImage(scene, {480, 360, ShadingModel::Flat}).image);
   std::printf("flat: %u triangles checked, %u with more than one colour\n", flat.trianglesChecked,
               flat.trianglesVarying);
   // About half of the 80 face the camera; those seen nearly edge-on have no
@@ -278,12 +278,12 @@ TEST_F(ShadingStability, FlatGivesEachTriangleExactlyOneColour) {
   EXPECT_EQ(flat.trianglesVarying, 0u);
   // The check can fail: Gouraud's interpolated colours vary inside triangles.
   FacetCheck gouraud = checkFacets(
-      scene, renderer().renderToImage(scene, {480, 360, ShadingModel::Gouraud, 1}).image);
+      scene, renderer().renderToImage(scene, {480, 360, ShadingModel::Gouraud}).image);
   EXPECT_GE(gouraud.trianglesVarying, gouraud.trianglesChecked / 2);
 }
 
 TEST_F(ShadingStability, FacetingErrorFallsAsTessellationRises) {
-  RenderSettings size{320, 240, ShadingModel::Phong, 1};
+  RenderSettings size{320, 240, ShadingModel::Phong};
   ImageU8 reference = encodeSrgb8(renderer().renderToImage(coarseSphere(6), size).image);
   double previous = 1e9;
   double first = 0.0;
@@ -326,7 +326,7 @@ TEST_F(ShadingStability, NonUniformScaleNeedsTheInverseTranspose) {
   ASSERT_GT(trueNormal.z, 0.0f);
 
   auto worstError = [&](NormalTransform normals) {
-    RenderSettings settings{kSize, kSize, ShadingModel::Phong, 1};
+    RenderSettings settings{kSize, kSize, ShadingModel::Phong};
     settings.normalTransform = normals;
     ImageRgba image = renderer().renderToImage(scene, settings).image;
     float worst = 0.0f;
@@ -395,10 +395,10 @@ TEST_F(ShadingStability, DegenerateInputsGiveNoNaNOrInf) {
   Scene backLitOnly = scene;
   backLitOnly.lights.erase(backLitOnly.lights.begin());
   for (ShadingModel model : kLitModels) {
-    ImageRgba image = renderer().renderToImage(scene, {128, 128, model, 1}).image;
+    ImageRgba image = renderer().renderToImage(scene, {128, 128, model}).image;
     EXPECT_EQ(nonFinitePixels(image), 0u) << shadingModelName(model);
     // With only the light behind, the back-lit plane is exactly Ia ka.
-    ImageRgba behind = renderer().renderToImage(backLitOnly, {128, 128, model, 1}).image;
+    ImageRgba behind = renderer().renderToImage(backLitOnly, {128, 128, model}).image;
     EXPECT_EQ(nonFinitePixels(behind), 0u) << shadingModelName(model);
     for (auto [px, py] : {std::pair{64u, 64u}, {64u, 4u}, {4u, 64u}, {124u, 64u}})
       EXPECT_LE(largestChannelError(glm::vec3(behind.at(px, py)), scene.ambient * matte.ka),

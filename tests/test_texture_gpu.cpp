@@ -115,13 +115,24 @@ TEST_F(TextureUpload, SamplersAreCreatedOncePerDescription) {
   Scene scene = builtinScene("bump");  // three maps, one sampler description
   for (int i = 0; i < 2; ++i) {
     GpuScene gpuScene = uploadScene(context(), scene);
-    textures.upload(scene, gpuScene, {});
-    for (const DrawItem& draw : gpuScene.draws) EXPECT_NE(draw.materialSet, VK_NULL_HANDLE);
+    textures.upload(scene, gpuScene);
+    textures.prepareFilter(std::nullopt);
+    std::span<const VkDescriptorSet> sets = textures.materialSets(std::nullopt);
+    for (const DrawItem& draw : gpuScene.draws) {
+      ASSERT_LT(draw.material, sets.size());
+      EXPECT_NE(sets[draw.material], VK_NULL_HANDLE);
+    }
   }
   EXPECT_EQ(textures.samplerCount(), 1u);
-  GpuScene gpuScene = uploadScene(context(), scene);
-  textures.upload(scene, gpuScene, {TextureFilter::Nearest, true, false});
+  // Another filter is another set per material, and one more sampler.
+  textures.prepareFilter(TextureFilter::Nearest);
   EXPECT_EQ(textures.samplerCount(), 2u);
+  EXPECT_NE(textures.materialSets(TextureFilter::Nearest)[0],
+            textures.materialSets(std::nullopt)[0]);
+  // Prepared choices are kept: preparing one again writes nothing new.
+  VkDescriptorSet nearest = textures.materialSets(TextureFilter::Nearest)[0];
+  textures.prepareFilter(TextureFilter::Nearest);
+  EXPECT_EQ(textures.materialSets(TextureFilter::Nearest)[0], nearest);
 }
 
 // The UV convention (core/scene/mesh.h): origin at the bottom left, v up, so an
@@ -148,7 +159,7 @@ Scene quadrantScene() {
 }
 
 TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
-  ImageU8 image = render(quadrantScene(), {32, 32, ShadingModel::Phong, 1});
+  ImageU8 image = render(quadrantScene(), {32, 32, ShadingModel::Phong});
   EXPECT_EQ(image.at(8, 8), glm::u8vec4(255, 0, 0, 255));
   EXPECT_EQ(image.at(24, 8), glm::u8vec4(0, 255, 0, 255));
   EXPECT_EQ(image.at(8, 24), glm::u8vec4(0, 0, 255, 255));
@@ -183,7 +194,7 @@ TEST_F(TextureUpload, WrapModesApplyPerAxis) {
     material.uvScale = glm::vec2(2.0f);
     material.diffuseMap.sampler.wrapU = wrapU;
     material.diffuseMap.sampler.wrapV = wrapV;
-    ImageU8 image = render(scene, {32, 32, ShadingModel::Phong, 1});
+    ImageU8 image = render(scene, {32, 32, ShadingModel::Phong});
     uint32_t wrong = 0;
     for (uint32_t y = 0; y < 32; ++y)
       for (uint32_t x = 0; x < 32; ++x) {
@@ -204,7 +215,7 @@ TEST_F(TextureUpload, PlanarProjectionShowsTheImageOnASphere) {
   ball.mesh = scene.addMesh(makeUvSphere(1.0f, 32, 16));
   ball.material.uvProjection = UvProjection::Planar;
   scene.objects = {ball};
-  ImageU8 image = render(scene, {32, 32, ShadingModel::Phong, 1});
+  ImageU8 image = render(scene, {32, 32, ShadingModel::Phong});
   EXPECT_EQ(image.at(10, 10), glm::u8vec4(255, 0, 0, 255));
   EXPECT_EQ(image.at(21, 10), glm::u8vec4(0, 255, 0, 255));
   EXPECT_EQ(image.at(10, 21), glm::u8vec4(0, 0, 255, 255));

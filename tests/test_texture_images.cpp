@@ -18,7 +18,7 @@ constexpr uint32_t kHeight = 180;
 
 RenderSettings settingsFor(uint32_t width, uint32_t height, std::optional<TextureFilter> filter,
                            ShadingModel model = ShadingModel::Phong) {
-  RenderSettings settings{width, height, model, 1};
+  RenderSettings settings{width, height, model};
   settings.textures.filterOverride = filter;
   return settings;
 }

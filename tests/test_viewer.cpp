@@ -45,7 +45,7 @@ class Viewer : public GpuTest {
                "cd " + dir.string() + " &&" + environment);
   }
   ImageU8 headless(Scene scene, ShadingModel model, std::vector<ShadingModel> split = {}) {
-    RenderSettings settings{kWidth, kHeight, model, 1};
+    RenderSettings settings{kWidth, kHeight, model};
     settings.splitModels = std::move(split);
     return render(scene, settings);
   }
@@ -150,7 +150,7 @@ TEST_F(Viewer, EnvironmentToggleMatchesHeadlessRender) {
   Scene scene = builtinScene("env");
   ImageU8 on = readImageU8(path("env-on.png"));
   ImageU8 off = readImageU8(path("env-off.png"));
-  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong, 1};
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
   EXPECT_TRUE(matchesImage(render(scene, settings), on));
   settings.environment = false;
   EXPECT_TRUE(matchesImage(render(scene, settings), off));
@@ -176,7 +176,7 @@ TEST_F(Viewer, TextureKeysMatchHeadlessRendersWithTheSameOptions) {
       "mip-plane");
   ASSERT_EQ(mip.exitCode, 0) << mip.output;
   EXPECT_NE(mip.output.find("texture filter: nearest"), std::string::npos) << mip.output;
-  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong, 1};
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
   settings.textures.bump = false;
   ImageU8 flatBump = readImageU8(path("flat-bump.png"));
   EXPECT_TRUE(matchesImage(render(builtinScene("bump"), settings), flatBump));
@@ -192,6 +192,33 @@ TEST_F(Viewer, TextureKeysMatchHeadlessRendersWithTheSameOptions) {
   EXPECT_TRUE(matchesImage(render(builtinScene("mip-plane"), settings), tint));
   settings.textures.mipTint = false;
   EXPECT_FALSE(matchesImage(render(builtinScene("mip-plane"), settings), tint));
+}
+
+// Keys that change only per-frame settings upload nothing: the scene's
+// geometry, textures and environment cube stay as uploaded at start. The
+// count the viewer prints is the renderer's; T, which does re-tessellate and
+// upload, shows the count counts.
+TEST_F(Viewer, PerFrameKeysUploadNothing) {
+  auto uploads = [](const std::string& output) {
+    std::smatch match;
+    EXPECT_TRUE(std::regex_search(output, match, std::regex(R"(view: (\d+) scene uploads)")))
+        << output;
+    return match.empty() ? -1 : std::stoi(match[1]);
+  };
+  const std::string perFrameKeys =
+      "key B\nframes 1\nkey M\nframes 1\nkey F\nframes 1\nkey F\nframes 1\n"
+      "key E\nframes 1\nkey E\nframes 1\nkey W\nkey C\nkey 2\nframes 1\n";
+  CommandResult bump = view(perFrameKeys, "bump");
+  ASSERT_EQ(bump.exitCode, 0) << bump.output;
+  EXPECT_NE(bump.output.find("texture filter: bilinear"), std::string::npos) << bump.output;
+  EXPECT_EQ(uploads(bump.output), 1);
+  CommandResult env = view(perFrameKeys, "env");
+  ASSERT_EQ(env.exitCode, 0) << env.output;
+  EXPECT_NE(env.output.find("environment mapping off"), std::string::npos) << env.output;
+  EXPECT_EQ(uploads(env.output), 1);
+  CommandResult tessellated = view(perFrameKeys + "key T\nframes 1\n", "bump");
+  ASSERT_EQ(tessellated.exitCode, 0) << tessellated.output;
+  EXPECT_EQ(uploads(tessellated.output), 2);
 }
 
 TEST_F(Viewer, TessellationKeysMatchHeadlessRetessellatedScene) {
@@ -217,7 +244,7 @@ TEST_F(Viewer, StartOptionsMatchHeadlessRenderWithTheSameOptions) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   Scene scene = builtinScene("teapot");
   scene.retessellate(0.5f);
-  RenderSettings settings{kWidth, kHeight, ShadingModel::Gouraud, 1};
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Gouraud};
   settings.msaaSamples = 4;
   ImageU8 shot = readImageU8(path("start.png"));
   EXPECT_TRUE(matchesImage(render(scene, settings), shot));
@@ -339,7 +366,7 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   }
   Renderer edited(context());
   edited.reloadShaders(spirv);
-  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong, 1};
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
   ImageU8 expected = encodeSrgb8(edited.renderToImage(builtinScene("default"), settings).image);
   EXPECT_TRUE(matchesImage(expected, after));
 }
@@ -363,7 +390,7 @@ TEST_F(Viewer, OverlayIsDrawnOverTheScene) {
   CommandResult r = view("frames 3\nscreenshot overlay.png\n", "", "", "640x360");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   ImageU8 shot = readImageU8(path("overlay.png"));
-  RenderSettings settings{640, 360, ShadingModel::Phong, 1};
+  RenderSettings settings{640, 360, ShadingModel::Phong};
   ImageU8 scene = render(builtinScene("default"), settings);
   ImageDifference difference = compareImages(scene, shot, 4);
   std::printf("overlay covers %.1f%% of pixels\n", 100.0 * difference.fractionOverThreshold);

@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
+#include "core/base/split_screen.h"
 #include "core/metrics/metrics.h"
 #include "core/trace/raytracer.h"
 #include "core/trace/reflection_regions.h"
@@ -32,13 +33,6 @@ struct CompareOptions {
   uint32_t samplesPerPixel = 4;
   std::string shadows = "on";
 };
-
-ImageU8 crop(const ImageU8& image, uint32_t x0, uint32_t width) {
-  ImageU8 result(width, image.height);
-  for (uint32_t y = 0; y < image.height; ++y)
-    for (uint32_t x = 0; x < width; ++x) result.set(x, y, image.at(x0 + x, y));
-  return result;
-}
 
 // The heatmaps' key: the FLIP ramp from 0 (left) to 1 (right) in a band
 // across the cell, on the sheet's background.
@@ -131,9 +125,11 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   std::printf("reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
   std::printf("%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
               "mean FLIP");
+  // The split frame is exactly models.size() cells wide: every column is one cell.
+  std::vector<ScreenColumn> columns = splitColumns(split.width, uint32_t(models.size()));
   for (size_t i = 0; i < models.size(); ++i) {
     std::string name(shadingModelName(models[i]));
-    ImageU8 image = crop(split, uint32_t(i) * cell.width, cell.width);
+    ImageU8 image = cropColumns(split, columns[i].left, columns[i].width);
     ImageDifference difference = compareImages(expected, image);
     const double ssim = structuralSimilarity(expected, image).mean;
     const MetricMap flip = flipError(expected, image);

@@ -174,7 +174,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
                                     : options.benchFolder + "/results.csv");
     }
     if (point.tessellation != 1.0f) scene.retessellate(point.tessellation);
-    RenderSettings settings{size.width, size.height, point.model, options.frames};
+    RenderSettings settings{size.width, size.height, point.model};
+    settings.frames = options.frames;
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
     settings.environment = environment;

@@ -23,6 +23,7 @@ struct ViewOptions {
   float tessellation = 1.0f;
   uint32_t msaa = 1;
   std::string depth = "d32f";
+  bool keyLatency = false;
 };
 
 int runView(const ViewOptions& options, const GlobalOptions& global) {
@@ -34,6 +35,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.initial.msaaSamples = options.msaa;
   viewer.initial.depth = parseNamed(kDepthModeNames, options.depth, "--depth");
   viewer.tessellation = options.tessellation;
+  viewer.logKeyLatency = options.keyLatency;
   if (!options.script.empty())
     viewer.script = parseViewerScript(options.script, Viewer::keyNames());
   const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
@@ -87,6 +89,9 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::IsMember({1u, 4u}));
   command->add_option("--depth", options->depth, namedHelp("Depth buffer", kDepthModeNames))
       ->capture_default_str();
+  command->add_flag("--key-latency", options->keyLatency,
+                    "Print, per key, the milliseconds from handling it to the next frame's "
+                    "present and to that frame's end on the device");
   command->add_option("--script", options->script,
                       "Run the steps of FILE (key, frames, drag, scroll, resize, minimize, "
                       "restore, screenshot, memory, quit) instead of waiting for input");

@@ -60,7 +60,8 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
     for (size_t i = 0; i < points.size(); ++i) {
       const BenchPoint& point = points[i];
       BenchResult& result = results[i];
-      RenderSettings settings{options.width, options.height, point.model, options.frames};
+      RenderSettings settings{options.width, options.height, point.model};
+      settings.frames = options.frames;
       settings.msaaSamples = point.msaaSamples;
       settings.textures.filterOverride = point.filter;
       resetPeakResident();

@@ -105,7 +105,8 @@ std::vector<ShaderVariant> ForwardPass::shaderVariants() {
 void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv) {
   for (auto& [name, module] : modules_)
     module = createShaderModule(context_.device(), spirv.at(name));
-  pipelines_.clear();
+  // Frames record with the variants already prepared, so each is rebuilt now.
+  for (auto& [variant, pipeline] : pipelines_) pipeline = createPipeline(variant);
 }
 
 void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
@@ -113,17 +114,22 @@ void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool texturedVariant : {false, true})
       for (bool blendedVariant : {false, true}) {
-        VariantKey key{ShadingModel(model), lights, target,     texturedVariant,
-                       blendedVariant,      false,  environment};
+        ForwardVariant key{.model = ShadingModel(model),
+                           .lights = lights,
+                           .target = target,
+                           .textured = texturedVariant,
+                           .blended = blendedVariant,
+                           .environment = environment};
         bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
         if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
       }
-  VariantKey wireframe{ShadingModel::Unlit, lights, target, false, false, true, false};
+  ForwardVariant wireframe{
+      .model = ShadingModel::Unlit, .lights = lights, .target = target, .wireframe = true};
   if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
     pipelines_[wireframe] = createPipeline(wireframe);
 }
 
-Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
+Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   const auto& [model, lights, target, textured, blended, wireframe, environment] = key;
   struct {
     int32_t shadingModel;
@@ -227,10 +233,20 @@ Pipeline ForwardPass::createPipeline(const VariantKey& key) const {
                           colorFormat_, depthFormat(target.depth), layout_});
 }
 
-void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
-                         VkDescriptorSet frameSet, const GpuScene& scene,
-                         std::span<const DrawItem> draws, const VkViewport& viewport,
-                         bool environment) const {
+// A draw's constants with the frame's texture switches applied to its
+// TEXTURE_* flags (a textured draw's maps are in its flags from upload).
+static gpu::DrawConstants frameConstants(const DrawItem& draw, const ForwardFrame& frame) {
+  gpu::DrawConstants constants = draw.constants;
+  if (!draw.textured) return constants;
+  if (!frame.bump) constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
+  if (frame.mipTint) constants.object.y |= TEXTURE_MIP_TINT;
+  return constants;
+}
+
+void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardFrame& frame,
+                         const GpuScene& scene, std::span<const DrawItem> draws,
+                         const VkViewport& viewport) const {
+  VkDescriptorSet frameSet = frame.frameSet;
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
@@ -246,37 +262,46 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, TargetLayout t
   for (const DrawItem& draw : draws) {
     std::pair<bool, bool> variant{draw.textured, draw.transparent};
     if (bound != variant) {
-      auto pipeline = pipelines_.find(
-          {model, scene.lights, target, draw.textured, draw.transparent, false, environment});
+      auto pipeline = pipelines_.find({.model = model,
+                                       .lights = scene.lights,
+                                       .target = frame.target,
+                                       .textured = draw.textured,
+                                       .blended = draw.transparent,
+                                       .environment = frame.environment});
       assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
       bound = variant;
     }
-    if (draw.textured && draw.materialSet != materialSet) {
-      assert(draw.materialSet != VK_NULL_HANDLE && "textured draw without its material set");
-      materialSet = draw.materialSet;
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &materialSet, 0,
-                              nullptr);
+    if (draw.textured) {
+      assert(draw.material < frame.materialSets.size() && "textured draw without its material set");
+      if (frame.materialSets[draw.material] != materialSet) {
+        materialSet = frame.materialSets[draw.material];
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &materialSet,
+                                0, nullptr);
+      }
     }
+    gpu::DrawConstants constants = frameConstants(draw, frame);
     vkCmdPushConstants(
         cmd, layout_,
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-        sizeof(draw.constants), &draw.constants);
+        sizeof(constants), &constants);
     vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
   }
 }
 
-void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
-                                  VkDescriptorSet frameSet, const GpuScene& scene,
-                                  std::span<const DrawItem> draws,
+void ForwardPass::recordWireframe(VkCommandBuffer cmd, const ForwardFrame& frame,
+                                  const GpuScene& scene, std::span<const DrawItem> draws,
                                   const VkViewport& viewport) const {
+  VkDescriptorSet frameSet = frame.frameSet;
   if (!context_.features().fillModeNonSolid) return;
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  auto pipeline =
-      pipelines_.find({ShadingModel::Unlit, scene.lights, target, false, false, true, false});
+  auto pipeline = pipelines_.find({.model = ShadingModel::Unlit,
+                                   .lights = scene.lights,
+                                   .target = frame.target,
+                                   .wireframe = true});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
@@ -287,7 +312,7 @@ void ForwardPass::recordWireframe(VkCommandBuffer cmd, TargetLayout target,
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
   for (const DrawItem& draw : draws) {
     // Unlit writes kd: every edge in one light grey, textured or not.
-    gpu::DrawConstants constants = draw.constants;
+    gpu::DrawConstants constants = frameConstants(draw, frame);
     constants.kd = glm::vec4(0.9f, 0.9f, 0.9f, 1.0f);
     vkCmdPushConstants(
         cmd, layout_,

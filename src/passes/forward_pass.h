@@ -11,7 +11,6 @@
 #include <map>
 #include <span>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "core/vulkan/context.h"
@@ -31,6 +30,31 @@ struct TargetLayout {
   auto operator<=>(const TargetLayout&) const = default;
 };
 
+// One forward pipeline: everything its specialization constants, stages and
+// fixed state are chosen by.
+struct ForwardVariant {
+  ShadingModel model = ShadingModel::Phong;
+  LightLayout lights;        // light counts and attenuation: specialization constants
+  TargetLayout target;       // sample count, depth format and compare op
+  bool textured = false;     // forward_textured.* stages, with the uv and tangent attributes
+  bool blended = false;      // transparent draws: "over" blending, no depth writes
+  bool wireframe = false;    // polygonMode LINE, depth-biased towards the eye
+  bool environment = false;  // SPEC_ENVIRONMENT: reflection and refraction of the cube
+  auto operator<=>(const ForwardVariant&) const = default;
+};
+
+// What one frame's forward draws are recorded with, besides the draws.
+struct ForwardFrame {
+  TargetLayout target;
+  VkDescriptorSet frameSet = VK_NULL_HANDLE;  // set 0
+  // Set 1 per DrawItem::material, for the frame's filter (SceneTextures).
+  std::span<const VkDescriptorSet> materialSets;
+  bool environment = false;  // the variants with the environment term
+  // Applied to the textured draws' TEXTURE_* push-constant flags per draw.
+  bool bump = true;      // false: normal and height maps ignored
+  bool mipTint = false;  // diffuse texels tinted by mip level
+};
+
 class ForwardPass {
  public:
   ForwardPass(const Context& context, VkFormat colorFormat);
@@ -47,24 +71,21 @@ class ForwardPass {
   // Records `draws` (visibleDraws: opaque first, then transparent ones, which
   // blend over what is drawn) inside an active dynamic-rendering scope; sets
   // its own viewport.
-  void record(VkCommandBuffer cmd, ShadingModel model, TargetLayout target,
-              VkDescriptorSet frameSet, const GpuScene& scene, std::span<const DrawItem> draws,
-              const VkViewport& viewport, bool environment = false) const;
+  void record(VkCommandBuffer cmd, ShadingModel model, const ForwardFrame& frame,
+              const GpuScene& scene, std::span<const DrawItem> draws,
+              const VkViewport& viewport) const;
   // Triangle edges of `draws` over what record() drew (polygonMode LINE,
   // depth-biased towards the eye); a no-op without fillModeNonSolid.
-  void recordWireframe(VkCommandBuffer cmd, TargetLayout target, VkDescriptorSet frameSet,
-                       const GpuScene& scene, std::span<const DrawItem> draws,
-                       const VkViewport& viewport) const;
+  void recordWireframe(VkCommandBuffer cmd, const ForwardFrame& frame, const GpuScene& scene,
+                       std::span<const DrawItem> draws, const VkViewport& viewport) const;
 
   // The shader table rows (shaders/CMakeLists.txt) compiled from the forward bodies.
   static std::vector<ShaderVariant> shaderVariants();
-  // New SPIR-V by row name; drops every pipeline (prepare() rebuilds them).
+  // New SPIR-V by row name; rebuilds every pipeline prepared so far.
   void reloadShaders(const std::map<std::string, std::vector<uint32_t>>& spirv);
 
  private:
-  // model, lights, target (samples, depth), textured, blended, wireframe, environment term
-  using VariantKey = std::tuple<ShadingModel, LightLayout, TargetLayout, bool, bool, bool, bool>;
-  Pipeline createPipeline(const VariantKey& key) const;
+  Pipeline createPipeline(const ForwardVariant& key) const;
 
   const Context& context_;
   VkFormat colorFormat_;
@@ -72,7 +93,7 @@ class ForwardPass {
   DescriptorSetLayout materialSetLayout_;
   PipelineLayout layout_;
   std::map<std::string, ShaderModule> modules_;  // by row name: every one of shaderVariants()
-  std::map<VariantKey, Pipeline> pipelines_;
+  std::map<ForwardVariant, Pipeline> pipelines_;
 };
 
 }  // namespace shadelab

@@ -9,6 +9,7 @@
 
 #include "core/vulkan/barriers.h"
 #include "core/base/errors.h"
+#include "core/base/split_screen.h"
 #include "core/vulkan/vk_check.h"
 
 namespace shadelab {
@@ -231,15 +232,17 @@ void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t
   vkCmdBeginRendering(cmd, &rendering);
 }
 
-GpuScene Renderer::upload(const Scene& scene, const TextureOptions& textures, bool environment) {
+GpuScene Renderer::upload(const Scene& scene, const SceneUploadOptions& options) {
   context_.waitIdle();
+  ++uploadCount_;
+  settingsApplied_ = false;  // the material sets and pipelines depend on the scene
   GpuScene gpuScene = uploadScene(context_, scene);
-  textures_.upload(scene, gpuScene, textures);
-  bindEnvironment(scene, environment);
+  textures_.upload(scene, gpuScene);
+  bindEnvironment(scene, options.environmentCube);
   return gpuScene;
 }
 
-void Renderer::prepare(const GpuScene& scene, const RenderSettings& settings) {
+void Renderer::validate(const GpuScene& scene, const FrameSettings& settings) const {
   uint32_t maxSize = context_.properties().limits.maxImageDimension2D;
   if (settings.width == 0 || settings.height == 0 || settings.width > maxSize ||
       settings.height > maxSize)
@@ -251,13 +254,19 @@ void Renderer::prepare(const GpuScene& scene, const RenderSettings& settings) {
   if (settings.splitModels.size() > settings.width)
     throw InputError("split screen: more views than pixel columns");
   checkDepthSupport(settings.depth);
-  bool textured = std::any_of(scene.draws.begin(), scene.draws.end(),
-                              [](const DrawItem& draw) { return draw.textured; });
+  if (scene.anyTextured) textures_.checkFilter(settings.textures.filterOverride);
+}
+
+void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& settings) {
+  validate(scene, settings);  // every InputError before anything changes
+  if (scene.anyTextured) textures_.prepareFilter(settings.textures.filterOverride);
   TargetLayout layout{settings.msaaSamples, settings.depth};
-  bool environment = bool(sceneEnvironment_);
-  forward_.prepare(scene.lights, layout, textured, scene.anyTransparent, environment);
+  bool environment = settings.environment && sceneEnvironment_;
+  forward_.prepare(scene.lights, layout, scene.anyTextured, scene.anyTransparent, environment);
   if (environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
+  settings_ = settings;
+  settingsApplied_ = true;
 }
 
 void Renderer::waitForFrame(RenderStats& stats) {
@@ -274,10 +283,10 @@ VkCommandBuffer Renderer::beginFrame() {
   return frame.cmd;
 }
 
-void Renderer::recordScene(const GpuScene& scene, const Scene& source,
-                           const RenderSettings& settings, RenderStats& stats) {
+void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderStats& stats) {
+  assert(settingsApplied_ && "applyFrameSettings() after upload(), before recording");
+  const FrameSettings& settings = settings_;
   Frame& frame = frames_[frameIndex_ % kFramesInFlight];
-  prepare(scene, settings);
   ensureObjectCapacity(frame, uint32_t(source.objects.size()));
   uint32_t width = settings.width, height = settings.height;
   glm::mat4 view = source.camera.viewMatrix();
@@ -292,8 +301,14 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
   stats.drawCalls = uint32_t(draws.size());
   stats.triangles = 0;
   for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
-  bool environment = bool(sceneEnvironment_);
   std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
+  ForwardFrame forwardFrame{.target = target_.layout,
+                            .frameSet = frame.set,
+                            .environment = settings.environment && sceneEnvironment_,
+                            .bump = settings.textures.bump,
+                            .mipTint = settings.textures.mipTint};
+  if (scene.anyTextured)
+    forwardFrame.materialSets = textures_.materialSets(settings.textures.filterOverride);
 
   VkCommandBuffer cmd = frame.cmd;
   vkCmdResetQueryPool(cmd, frame.timestamps, 0, 3);
@@ -303,25 +318,22 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source,
   // Split screen: equal columns, one shading model each, one camera.
   std::vector<ShadingModel> models = settings.splitModels;
   if (models.empty()) models.push_back(settings.shadingModel);
-  float columnWidth = float(width) / float(models.size());
+  std::vector<ScreenColumn> columns = splitColumns(width, uint32_t(models.size()));
   for (size_t i = 0; i < models.size(); ++i) {
-    float left = std::floor(columnWidth * float(i));
-    float right = std::floor(columnWidth * float(i + 1));
-    VkViewport viewport{left, 0.0f, right - left, float(height), 0.0f, 1.0f};
+    VkViewport viewport{float(columns[i].left), 0.0f, float(columns[i].width), float(height),
+                        0.0f, 1.0f};
     // Opaque draws, the skybox where they left the far plane, then the
     // transparent draws, which write no depth, over both.
     auto firstTransparent = std::find_if(draws.begin(), draws.end(),
                                          [](const DrawItem& draw) { return draw.transparent; });
     std::span<const DrawItem> opaque(draws.begin(), firstTransparent);
     std::span<const DrawItem> transparent(firstTransparent, draws.end());
-    forward_.record(cmd, models[i], target_.layout, frame.set, scene, opaque, viewport,
-                    environment);
-    if (environment) skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
+    forward_.record(cmd, models[i], forwardFrame, scene, opaque, viewport);
+    if (forwardFrame.environment)
+      skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
     if (!transparent.empty())
-      forward_.record(cmd, models[i], target_.layout, frame.set, scene, transparent, viewport,
-                      environment);
-    if (settings.wireframe)
-      forward_.recordWireframe(cmd, target_.layout, frame.set, scene, draws, viewport);
+      forward_.record(cmd, models[i], forwardFrame, scene, transparent, viewport);
+    if (settings.wireframe) forward_.recordWireframe(cmd, forwardFrame, scene, draws, viewport);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
@@ -385,8 +397,9 @@ void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>&
 
 RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& settings) {
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
-  GpuScene gpuScene = upload(scene, settings.textures, settings.environment);
-  prepare(gpuScene, settings);
+  // A cube the settings would not draw is not built.
+  GpuScene gpuScene = upload(scene, {.environmentCube = settings.environment});
+  applyFrameSettings(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 
@@ -396,7 +409,7 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   for (uint32_t i = 0; i < settings.frames; ++i) {
     waitForFrame(result.stats);
     beginFrame();
-    recordScene(gpuScene, scene, settings, result.stats);
+    recordScene(gpuScene, scene, result.stats);
     if (i + 1 == settings.frames) recordReadback(readback);
     submitFrame();
   }

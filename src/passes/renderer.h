@@ -22,23 +22,42 @@
 
 namespace shadelab {
 
-struct RenderSettings {
+// What an upload builds from a scene and keeps until the next upload:
+// geometry, every texture with its mip chain, and the environment cube.
+struct SceneUploadOptions {
+  // Build the scene's environment cube (when it has one). Without it,
+  // FrameSettings::environment has nothing to draw. The viewer builds it so
+  // that E is a per-frame switch; renderToImage only when its settings use it.
+  bool environmentCube = true;
+};
+
+// How a frame is drawn. Renderer::applyFrameSettings validates them once,
+// when they change; recordScene applies them to every frame it records.
+// Changing any of them re-uploads nothing.
+struct FrameSettings {
   uint32_t width = 1280;
   uint32_t height = 720;
   ShadingModel shadingModel = ShadingModel::Phong;
-  uint32_t frames = 1;       // frames drawn back to back; the last one is read back
-  uint32_t msaaSamples = 1;  // 1 or 4 (what lavapipe offers)
   // Split screen: when not empty, the frame is cut into this many equal
   // columns, side by side, each drawn with its model and the same camera.
   std::vector<ShadingModel> splitModels;
+  uint32_t msaaSamples = 1;  // 1 or 4 (what lavapipe offers)
   NormalTransform normalTransform = NormalTransform::InverseTranspose;
-  TextureOptions textures;            // --filter override, --bump, --mip-tint
+  // --filter (which material descriptor sets are bound), --bump and
+  // --mip-tint (flags in the textured draws' push constants).
+  TextureOptions textures;
   DepthMode depth = DepthMode::D32F;  // z-buffer format; ReversedZ: D32F, near -> 1, far -> 0
   bool frustumCulling = true;         // off only to show that culling changes no pixel
   bool wireframe = false;  // triangle edges drawn over the shaded image (needs fillModeNonSolid)
-  // --env: with a scene environment, the environment term and the skybox;
-  // off (or a scene without one) renders with the background colour only.
+  // --env: with an environment cube (the scene's, built at upload), the
+  // environment term and the skybox; off (or no cube) renders with the
+  // background colour only.
   bool environment = true;
+};
+
+// renderToImage: one scene, uploaded once, drawn `frames` times.
+struct RenderSettings : FrameSettings {
+  uint32_t frames = 1;  // frames drawn back to back; the last one is read back
 };
 
 struct RenderStats {
@@ -80,25 +99,33 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Throws InputError for an impossible size.
+  // Throws InputError for impossible settings.
   RenderResult renderToImage(const Scene& scene, const RenderSettings& settings);
 
   // The steps renderToImage is made of, for front ends that own the loop (the
-  // viewer): upload once, then per frame waitForFrame, beginFrame,
-  // recordScene, optional recordReadback and commands of their own on
-  // commandBuffer(), submitFrame.
-  // Geometry, textures (the options are applied at upload) and, when
-  // `environment` is on, the scene's environment cube; waits for frames in
-  // flight, which may use the previous scene's textures.
-  GpuScene upload(const Scene& scene, const TextureOptions& textures, bool environment = true);
-  // Throws InputError for impossible settings; builds pipelines and target.
-  void prepare(const GpuScene& scene, const RenderSettings& settings);
+  // viewer): upload a scene, applyFrameSettings (again whenever a setting
+  // changes), then per frame waitForFrame, beginFrame, recordScene, optional
+  // recordReadback and commands of their own on commandBuffer(), submitFrame.
+  // Geometry, textures and (options.environmentCube) the environment cube;
+  // waits for frames in flight, which may use the previous scene's textures.
+  // Settings are applied again before the next recordScene.
+  GpuScene upload(const Scene& scene, const SceneUploadOptions& options = {});
+  // Throws InputError, changing nothing, for settings the device cannot draw
+  // (size, MSAA, depth format, more split columns than pixels, anisotropy);
+  // otherwise builds what they need (pipelines, the filter's material sets,
+  // the target) and keeps them for recordScene. Never waits for the device
+  // unless the target changes size, samples or depth format.
+  void applyFrameSettings(const GpuScene& scene, const FrameSettings& settings);
+  const FrameSettings& frameSettings() const { return settings_; }
+  // How many times upload() ran: what a per-frame setting must not change.
+  uint32_t uploadCount() const { return uploadCount_; }
   // Waits for the oldest frame in flight and appends its timings to `stats`.
   void waitForFrame(RenderStats& stats);
   VkCommandBuffer beginFrame();
-  // Sets stats' per-frame counts (draws and triangles after culling).
-  void recordScene(const GpuScene& scene, const Scene& source, const RenderSettings& settings,
-                   RenderStats& stats);
+  // Records `scene` (uploaded from `source`, whose camera and lights this
+  // frame uses) with the applied settings; sets stats' per-frame counts
+  // (draws and triangles after culling).
+  void recordScene(const GpuScene& scene, const Scene& source, RenderStats& stats);
   // Copies the colour target into `readback` (width * height * 8 bytes, host-visible).
   void recordReadback(const Buffer& readback);
   void submitFrame(const FrameSync& sync = {});
@@ -142,6 +169,8 @@ class Renderer {
 
   void createFrame(Frame& frame);
   void ensureObjectCapacity(Frame& frame, uint32_t count);
+  // Throws InputError for settings the device cannot draw `scene` with.
+  void validate(const GpuScene& scene, const FrameSettings& settings) const;
   // Throws InputError when the device cannot use the depth format as an attachment.
   void checkDepthSupport(DepthMode mode) const;
   void ensureTarget(uint32_t width, uint32_t height, TargetLayout layout);
@@ -167,6 +196,9 @@ class Renderer {
   uint64_t frameIndex_ = 0;  // frames begun; the slot is frameIndex_ % kFramesInFlight
   double lastCompletion_ = 0.0;
   Target target_;
+  FrameSettings settings_;        // as last applied
+  bool settingsApplied_ = false;  // since the last upload
+  uint32_t uploadCount_ = 0;
 };
 
 }  // namespace shadelab

@@ -135,28 +135,27 @@ VkSampler SceneTextures::sampler(const SamplerDesc& desc) {
   return samplers_.emplace(desc, Sampler(context_.device(), handle)).first->second;
 }
 
-// `scene` is read only by an assertion (unused in release builds).
-VkDescriptorSet SceneTextures::writeSet([[maybe_unused]] const Scene& scene,
-                                        const Material& material, const TextureOptions& options) {
+VkDescriptorSet SceneTextures::writeSet(const MaterialMaps& maps,
+                                        std::optional<TextureFilter> filterOverride) {
   VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   allocate.descriptorPool = pool_;
   allocate.descriptorSetCount = 1;
   allocate.pSetLayouts = &materialLayout_;
   VkDescriptorSet set = VK_NULL_HANDLE;
   VK_CHECK(vkAllocateDescriptorSets(context_.device(), &allocate, &set));
-  const std::tuple<uint32_t, const TextureSlot*, const GpuTexture*> slots[] = {
-      {BINDING_DIFFUSE_MAP, &material.diffuseMap, &white_},
-      {BINDING_NORMAL_MAP, &material.normalMap, &flatNormal_},
-      {BINDING_HEIGHT_MAP, &material.heightMap, &flatNormal_},  // any constant height is flat
+  const auto& [diffuse, diffuseSampler, normal, normalSampler, height, heightSampler] = maps;
+  const std::tuple<uint32_t, int32_t, SamplerDesc, const GpuTexture*> slots[] = {
+      {BINDING_DIFFUSE_MAP, diffuse, diffuseSampler, &white_},
+      {BINDING_NORMAL_MAP, normal, normalSampler, &flatNormal_},
+      {BINDING_HEIGHT_MAP, height, heightSampler, &flatNormal_},  // any constant height is flat
   };
   VkDescriptorImageInfo images[3];
   VkWriteDescriptorSet writes[3];
   for (int i = 0; i < 3; ++i) {
-    auto [binding, slot, dummy] = slots[i];
-    assert(!slot->present() || size_t(slot->texture) < scene.textures.size());
-    const GpuTexture& texture = slot->present() ? textures_[size_t(slot->texture)] : *dummy;
-    SamplerDesc desc = slot->sampler;
-    if (options.filterOverride) desc.filter = *options.filterOverride;
+    auto [binding, textureIndex, desc, dummy] = slots[i];
+    assert(textureIndex < int32_t(textures_.size()));
+    const GpuTexture& texture = textureIndex >= 0 ? textures_[size_t(textureIndex)] : *dummy;
+    if (filterOverride) desc.filter = *filterOverride;
     images[i] = {sampler(desc), texture.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set;
@@ -169,41 +168,62 @@ VkDescriptorSet SceneTextures::writeSet([[maybe_unused]] const Scene& scene,
   return set;
 }
 
-void SceneTextures::upload(const Scene& scene, GpuScene& gpuScene, const TextureOptions& options) {
+void SceneTextures::upload(const Scene& scene, GpuScene& gpuScene) {
+  for (std::vector<VkDescriptorSet>& sets : sets_) sets.clear();
   pool_.reset();
+  materials_.clear();
   textures_.clear();
   std::vector<const Texture*> sources;
   for (const Texture& texture : scene.textures) sources.push_back(&texture);
   textures_ = uploadTextures(context_, mips_, sources);
 
-  uint32_t texturedDraws = uint32_t(std::count_if(gpuScene.draws.begin(), gpuScene.draws.end(),
-                                                  [](const DrawItem& d) { return d.textured; }));
-  if (texturedDraws == 0) return;
-  // Sized once for the scene: at most one set per textured object.
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * texturedDraws};
+  // Objects whose materials use the same textures and samplers share a set.
+  std::map<MaterialMaps, uint32_t> numbers;
+  for (DrawItem& draw : gpuScene.draws) {
+    if (!draw.textured) continue;
+    const Material& material = scene.objects[size_t(draw.constants.object.x)].material;
+    auto index = [](const TextureSlot& slot) { return slot.present() ? slot.texture : -1; };
+    MaterialMaps maps{index(material.diffuseMap), material.diffuseMap.sampler,
+                      index(material.normalMap),  material.normalMap.sampler,
+                      index(material.heightMap),  material.heightMap.sampler};
+    auto [found, added] = numbers.emplace(maps, uint32_t(materials_.size()));
+    if (added) materials_.push_back(maps);
+    draw.material = found->second;
+  }
+  if (materials_.empty()) return;
+  // Sized once for the scene: a set per material and filter choice.
+  uint32_t maxSets = uint32_t(materials_.size() * kFilterChoices);
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * maxSets};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = texturedDraws;
+  poolInfo.maxSets = maxSets;
   poolInfo.poolSizeCount = 1;
   poolInfo.pPoolSizes = &size;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorPool(context_.device(), &poolInfo, nullptr, &pool));
   pool_ = DescriptorPool(context_.device(), pool);
+}
 
-  // Objects whose materials use the same textures and samplers share a set.
-  using SetKey = std::tuple<int32_t, SamplerDesc, int32_t, SamplerDesc, int32_t, SamplerDesc>;
-  std::map<SetKey, VkDescriptorSet> sets;
-  for (DrawItem& draw : gpuScene.draws) {
-    if (!draw.textured) continue;
-    const Material& material = scene.objects[size_t(draw.constants.object.x)].material;
-    SetKey key{material.diffuseMap.texture, material.diffuseMap.sampler,
-               material.normalMap.texture,  material.normalMap.sampler,
-               material.heightMap.texture,  material.heightMap.sampler};
-    auto found = sets.find(key);
-    if (found == sets.end()) found = sets.emplace(key, writeSet(scene, material, options)).first;
-    draw.materialSet = found->second;
-    if (!options.bump) draw.constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
-    if (options.mipTint) draw.constants.object.y |= TEXTURE_MIP_TINT;
+void SceneTextures::checkFilter(std::optional<TextureFilter> filterOverride) const {
+  if (context_.features().samplerAnisotropy) return;
+  for (const MaterialMaps& maps : materials_) {
+    const auto& [diffuse, diffuseSampler, normal, normalSampler, height, heightSampler] = maps;
+    for (const SamplerDesc& desc : {diffuseSampler, normalSampler, heightSampler})
+      if (filterOverride.value_or(desc.filter) == TextureFilter::Anisotropic)
+        throw InputError("filter aniso: this device offers no anisotropic filtering");
   }
+}
+
+void SceneTextures::prepareFilter(std::optional<TextureFilter> filterOverride) {
+  std::vector<VkDescriptorSet>& sets = sets_[choiceIndex(filterOverride)];
+  if (sets.size() == materials_.size()) return;
+  for (const MaterialMaps& maps : materials_) sets.push_back(writeSet(maps, filterOverride));
+}
+
+std::span<const VkDescriptorSet> SceneTextures::materialSets(
+    std::optional<TextureFilter> filterOverride) const {
+  const std::vector<VkDescriptorSet>& sets = sets_[choiceIndex(filterOverride)];
+  assert(sets.size() == materials_.size() && "SceneTextures::prepareFilter() first");
+  return sets;
 }
 
 }  // namespace shadelab

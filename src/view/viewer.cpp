@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <fstream>
 
+#include "core/base/errors.h"
 #include "core/base/image.h"
+#include "core/base/split_screen.h"
 #include "core/base/stats.h"
 #include "core/vulkan/vk_check.h"
 #include "view/present_pass.h"
@@ -55,13 +57,6 @@ ImageU8 toImage(const Buffer& buffer, VkExtent2D extent, VkFormat format) {
   return image;
 }
 
-ImageU8 crop(const ImageU8& image, uint32_t left, uint32_t width) {
-  ImageU8 part(width, image.height);
-  for (uint32_t y = 0; y < image.height; ++y)
-    for (uint32_t x = 0; x < width; ++x) part.set(x, y, image.at(left + x, y));
-  return part;
-}
-
 Semaphore createSemaphore(VkDevice device) {
   VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
   VkSemaphore semaphore = VK_NULL_HANDLE;
@@ -78,18 +73,20 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
       options_(options),
       surface_(context.instance(), window.createSurface(context.instance())),
       renderer_(context),
-      gpuScene_(renderer_.upload(scene_, options.initial.textures, options.initial.environment)),
       swapchain_(context, surface_.get(), options.presentMode),
       sceneCamera_(scene_.camera),
       camera_(scene_.camera),
       settings_(options.initial),
       tessellation_(options.tessellation) {
-  if (tessellation_ != 1.0f) {
-    scene_.retessellate(tessellation_);
-    gpuScene_ = renderer_.upload(scene_, settings_.textures, settings_.environment);
-  }
-  for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
+  if (tessellation_ != 1.0f) scene_.retessellate(tessellation_);
   glm::ivec2 size = window.framebufferSize();
+  if (size.x > 0 && size.y > 0) {
+    settings_.width = uint32_t(size.x);
+    settings_.height = uint32_t(size.y);
+  }
+  // Settings the device cannot draw are an InputError here, before any frame.
+  uploadScene();
+  for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
   swapchain_.recreate({uint32_t(size.x), uint32_t(size.y)});
   overlay_ = std::make_unique<Overlay>(context, swapchain_.format(), swapchain_.minImageCount(),
                                        std::max(3u, swapchain_.imageCount()));
@@ -143,6 +140,40 @@ void Viewer::run() {
       median(frameDevice), median(wall));
   std::printf("view: swapchain built %u times (%u out of date, %u suboptimal)\n", swapchainBuilds_,
               outOfDate_, suboptimal_);
+  std::printf("view: %u scene uploads (geometry, textures, environment)\n",
+              renderer_.uploadCount());
+}
+
+void Viewer::uploadScene() {
+  gpuScene_ = renderer_.upload(scene_, {.environmentCube = true});
+  renderer_.applyFrameSettings(gpuScene_, settings_);
+}
+
+bool Viewer::applySettings(const FrameSettings& next) {
+  try {
+    renderer_.applyFrameSettings(gpuScene_, next);
+  } catch (const InputError& error) {
+    say(error.what(), true);
+    return false;
+  }
+  settings_ = next;
+  return true;
+}
+
+// The frame follows the swapchain's size. A window narrower than the split
+// screen's columns cannot show them: split screen goes off, saying why.
+bool Viewer::followSwapchainSize() {
+  VkExtent2D extent = swapchain_.extent();
+  if (extent.width == settings_.width && extent.height == settings_.height) return true;
+  FrameSettings resized = settings_;
+  resized.width = extent.width;
+  resized.height = extent.height;
+  if (applySettings(resized)) return true;
+  resized.splitModels.clear();
+  if (!applySettings(resized)) return false;
+  splitErrors_.clear();
+  say("split screen off: the window is narrower than its columns", true);
+  return true;
 }
 
 bool Viewer::advanceScript() {
@@ -254,7 +285,7 @@ bool Viewer::drawFrame() {
   if (swapchainStale_ || !swapchain_.valid() || int(current.width) != size.x ||
       int(current.height) != size.y)
     recreateSwapchain();
-  if (!swapchain_.valid() || swapchainStale_) return false;
+  if (!swapchain_.valid() || swapchainStale_ || !followSwapchainSize()) return false;
 
   uint32_t slot = renderer_.frameSlot();
   RenderStats stats;
@@ -277,12 +308,10 @@ bool Viewer::drawFrame() {
   }
 
   VkExtent2D extent = swapchain_.extent();
-  settings_.width = extent.width;
-  settings_.height = extent.height;
   scene_.camera = camera_.camera();
   VkCommandBuffer cmd = renderer_.beginFrame();
   RenderStats counts;
-  renderer_.recordScene(gpuScene_, scene_, settings_, counts);
+  renderer_.recordScene(gpuScene_, scene_, counts);
   submittedTriangles_ = counts.triangles;
 
   SlotWork& work = slotWork_[slot];
@@ -320,7 +349,27 @@ bool Viewer::drawFrame() {
     swapchainStale_ = true;
   }
   ++framesDrawn_;
+  if (!keysAwaitingFrame_.empty()) reportKeyLatency(nowSeconds());
   return true;
+}
+
+// The frame just presented is the first to show the keys' effect; waiting for
+// it here (only when a key is being timed) gives the time it finished on the
+// device, which lavapipe reaches after the present call has returned.
+void Viewer::reportKeyLatency(double presented) {
+  RenderStats stats;
+  renderer_.finishFrames(stats);
+  pushBounded(deviceMs_, stats.deviceMs);
+  pushBounded(frameDeviceMs_, stats.frameDeviceMs);
+  pushBounded(wallMs_, stats.wallMs);
+  double finished = nowSeconds();
+  for (const auto& [name, handled] : keysAwaitingFrame_)
+    std::printf(
+        "view: key %s latency: %.2f ms to the next frame's present, %.2f ms to its end on "
+        "the device\n",
+        name.c_str(), (presented - handled) * 1e3, (finished - handled) * 1e3);
+  std::fflush(stdout);
+  keysAwaitingFrame_.clear();
 }
 
 void Viewer::finishSlotWork(SlotWork& work) {
@@ -341,18 +390,19 @@ void Viewer::finishSlotWork(SlotWork& work) {
 // Each split-screen column against the Phong column: the same camera and
 // view, so the difference is the shading model's alone.
 void Viewer::computeSplitErrors(const SlotWork& work) {
-  const RenderSettings& used = work.metricsSettings;
+  const FrameSettings& used = work.metricsSettings;
   ImageU8 frame = encodeSrgb8(unpackHalfImage(work.metrics.mapped(), used.width, used.height));
   const std::vector<ShadingModel>& models = used.splitModels;
-  float columnWidth = float(used.width) / float(models.size());
+  std::vector<ScreenColumn> columns = splitColumns(used.width, uint32_t(models.size()));
   auto column = [&](size_t i, uint32_t width) {
-    return crop(frame, uint32_t(std::floor(columnWidth * float(i))), width);
+    return cropColumns(frame, columns[i].left, width);
   };
   auto phong = std::find(models.begin(), models.end(), ShadingModel::Phong);
   if (phong == models.end()) return;
   size_t reference = size_t(phong - models.begin());
-  // Columns differ by at most one pixel in width: compare the common part.
-  uint32_t width = uint32_t(std::floor(columnWidth));
+  // Columns differ by at most one pixel in width: compare the common part,
+  // the first column's width.
+  uint32_t width = columns[0].width;
   ImageU8 referenceImage = column(reference, width);
   bool first = splitErrors_.empty();
   splitErrors_.clear();

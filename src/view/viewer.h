@@ -1,7 +1,7 @@
 #pragma once
 // The interactive viewer: a window showing the scene drawn by the same
 // Renderer as headless capture, blitted into the swapchain, with a text
-// overlay; keys toggle RenderSettings, the mouse moves the camera, and a
+// overlay; keys toggle FrameSettings, the mouse moves the camera, and a
 // script can drive all of it (tests, README screenshots).
 #include <array>
 #include <deque>
@@ -30,8 +30,11 @@ struct ViewerOptions {
   std::optional<std::vector<ScriptStep>> script;  // none: interactive
   std::filesystem::path shaderDirectory;          // where R reloads GLSL from
   uint32_t metricsInterval = 30;                  // frames between split-screen error readbacks
-  RenderSettings initial;                         // model, MSAA, ...; the size follows the window
+  FrameSettings initial;                          // model, MSAA, ...; the size follows the window
   float tessellation = 1.0f;                      // as render --tess; T and G change it
+  // --key-latency: print, per key, the wall time from handling it to the next
+  // frame's present and to that frame finishing on the device.
+  bool logKeyLatency = false;
 };
 
 class Viewer;
@@ -62,7 +65,7 @@ class Viewer {
     VkExtent2D screenshotExtent{};
     Buffer metrics;
     bool metricsPending = false;
-    RenderSettings metricsSettings;
+    FrameSettings metricsSettings;
   };
 
   bool advanceScript();
@@ -76,12 +79,20 @@ class Viewer {
   OverlayText overlayText() const;
   void say(const std::string& message, bool error = false);
   void notAvailable(const std::string& feature);
+  // Every settings change goes through here: the renderer validates it once;
+  // on InputError the message shows and the current settings stay.
+  bool applySettings(const FrameSettings& next);
+  bool applyTextureOptions(const TextureOptions& textures, const std::string& message);
+  bool followSwapchainSize();
+  // Geometry, textures and the environment cube (built even when the
+  // environment is off, so E only switches it), then the settings again.
+  void uploadScene();
   void setModel(ShadingModel model);
   void setTessellation(float scale);
-  void applyTextureOptions(const std::string& message);
   void autoTessellate();
   void reloadShaders();
   std::string nextScreenshotName() const;
+  void reportKeyLatency(double presented);
 
   Window& window_;
   const Context& context_;
@@ -96,7 +107,7 @@ class Viewer {
   std::array<SlotWork, Renderer::kFramesInFlight> slotWork_;
   Camera sceneCamera_;  // as loaded; scene_.camera follows camera_
   CameraController camera_;
-  RenderSettings settings_;
+  FrameSettings settings_;  // as applied to renderer_
 
   float tessellation_;
   bool overlayVisible_ = true;
@@ -117,6 +128,8 @@ class Viewer {
   bool messageIsError_ = false;
   std::string screenshotRequest_;
   double lastFrameTime_ = 0.0;
+  // Keys handled since the last presented frame, with when (--key-latency).
+  std::vector<std::pair<std::string, double>> keysAwaitingFrame_;
 
   size_t scriptPosition_ = 0;
   uint32_t framesToRun_ = 0;

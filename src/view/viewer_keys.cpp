@@ -1,13 +1,17 @@
 // The viewer's keys and what the overlay shows about them. A key whose
 // feature is not in this build says so; when the feature lands as a
-// RenderSettings field, its binding toggles that field like W does.
+// FrameSettings field, its binding toggles that field like W does: a copy of
+// the settings, changed, applied (validated) by the renderer. Only T, G and A
+// upload the scene again.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "view/glsl_compiler.h"
 #include "core/scene/lod.h"
+#include "core/base/split_screen.h"
 #include "core/base/stats.h"
 #include "core/scene/texture.h"
 #include "view/viewer.h"
@@ -22,6 +26,11 @@ std::string formatMs(double ms) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.2f ms", ms);
   return text;
+}
+
+double nowSeconds() {
+  using Clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
 }
 
 std::string withThousands(uint64_t value) {
@@ -54,11 +63,13 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
        }},
       {'C', "C", "split screen: the four models side by side, errors against Phong",
        [](Viewer& v) {
-         bool on = v.settings_.splitModels.empty();
-         v.settings_.splitModels.clear();
+         FrameSettings next = v.settings_;
+         bool on = next.splitModels.empty();
+         next.splitModels.clear();
          if (on)
-           v.settings_.splitModels = {ShadingModel::Flat, ShadingModel::Gouraud,
-                                      ShadingModel::Phong, ShadingModel::BlinnPhong};
+           next.splitModels = {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
+                               ShadingModel::BlinnPhong};
+         if (!v.applySettings(next)) return;
          v.splitErrors_.clear();
          v.say(on ? "split screen on" : "split screen off");
        }},
@@ -66,8 +77,9 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
        [](Viewer& v) {
          if (!v.context_.features().fillModeNonSolid)
            return v.notAvailable("wireframe (the device lacks fillModeNonSolid)");
-         v.settings_.wireframe = !v.settings_.wireframe;
-         v.say(v.settings_.wireframe ? "wireframe on" : "wireframe off");
+         FrameSettings next = v.settings_;
+         next.wireframe = !next.wireframe;
+         if (v.applySettings(next)) v.say(next.wireframe ? "wireframe on" : "wireframe off");
        }},
       {'T', "T", "tessellation x2", [](Viewer& v) { v.setTessellation(v.tessellation_ * 2.0f); }},
       {'G', "G", "tessellation / 2", [](Viewer& v) { v.setTessellation(v.tessellation_ * 0.5f); }},
@@ -75,38 +87,44 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
        [](Viewer& v) { v.autoTessellate(); }},
       {'B', "B", "bump mapping (normal and height maps) on / off",
        [](Viewer& v) {
-         v.settings_.textures.bump = !v.settings_.textures.bump;
-         v.applyTextureOptions(std::string("bump mapping ") +
-                               (v.settings_.textures.bump ? "on" : "off"));
+         TextureOptions next = v.settings_.textures;
+         next.bump = !next.bump;
+         v.applyTextureOptions(next, std::string("bump mapping ") + (next.bump ? "on" : "off"));
        }},
       {'E', "E", "environment mapping (reflection, refraction, skybox) on / off",
        [](Viewer& v) {
-         v.settings_.environment = !v.settings_.environment;
-         v.gpuScene_ = v.renderer_.upload(v.scene_, v.settings_.textures, v.settings_.environment);
-         std::string state = v.settings_.environment ? "on" : "off";
+         FrameSettings next = v.settings_;
+         next.environment = !next.environment;
+         if (!v.applySettings(next)) return;
+         std::string state = next.environment ? "on" : "off";
          v.say(v.scene_.environment.present()
                    ? "environment mapping " + state
                    : "environment mapping " + state + " (this scene has no environment)");
        }},
       {'F', "F", "texture filter: materials' own, nearest, bilinear, trilinear, aniso",
        [](Viewer& v) {
-         std::optional<TextureFilter>& filter = v.settings_.textures.filterOverride;
-         if (!filter)
-           filter = TextureFilter::Nearest;
-         else if (*filter == TextureFilter::Anisotropic)
-           filter.reset();
-         else
-           filter = TextureFilter(int(*filter) + 1);
-         std::string name = filter ? textureFilterName(*filter) : "each material's own";
-         // PLATFORM.md: llvmpipe can take tens of seconds a frame with anisotropy.
-         if (filter == TextureFilter::Anisotropic) name += " (can be very slow on llvmpipe)";
-         v.applyTextureOptions("texture filter: " + name);
+         TextureOptions next = v.settings_.textures;
+         std::optional<TextureFilter>& filter = next.filterOverride;
+         // A choice the device cannot sample with (anisotropy) says so and is skipped.
+         for (int choice = 0; choice <= int(TextureFilter::Anisotropic) + 1; ++choice) {
+           if (!filter)
+             filter = TextureFilter::Nearest;
+           else if (*filter == TextureFilter::Anisotropic)
+             filter.reset();
+           else
+             filter = TextureFilter(int(*filter) + 1);
+           std::string name = filter ? textureFilterName(*filter) : "each material's own";
+           // PLATFORM.md: llvmpipe can take tens of seconds a frame with anisotropy.
+           if (filter == TextureFilter::Anisotropic) name += " (can be very slow on llvmpipe)";
+           if (v.applyTextureOptions(next, "texture filter: " + name)) return;
+         }
        }},
       {'M', "M", "mip-level tint on / off",
        [](Viewer& v) {
-         v.settings_.textures.mipTint = !v.settings_.textures.mipTint;
-         v.applyTextureOptions(std::string("mip-level tint ") +
-                               (v.settings_.textures.mipTint ? "on" : "off"));
+         TextureOptions next = v.settings_.textures;
+         next.mipTint = !next.mipTint;
+         v.applyTextureOptions(next,
+                               std::string("mip-level tint ") + (next.mipTint ? "on" : "off"));
        }},
       {'R', "R", "reload shaders from disk", [](Viewer& v) { v.reloadShaders(); }},
       {'P', "P", "screenshot of the presented frame (PNG)",
@@ -128,12 +146,17 @@ void Viewer::handleKey(int key) {
     quit_ = true;
     return;
   }
-  for (const KeyBinding& binding : keyBindings())
-    if (binding.key == key) return binding.action(*this);
+  for (const KeyBinding& binding : keyBindings()) {
+    if (binding.key != key) continue;
+    if (options_.logKeyLatency) keysAwaitingFrame_.push_back({binding.name, nowSeconds()});
+    return binding.action(*this);
+  }
 }
 
 void Viewer::setModel(ShadingModel model) {
-  settings_.shadingModel = model;
+  FrameSettings next = settings_;
+  next.shadingModel = model;
+  if (!applySettings(next)) return;
   std::string name(shadingModelName(model));
   say(settings_.splitModels.empty() ? name
                                     : name + " (split screen shows all models: C leaves it)");
@@ -148,8 +171,7 @@ void Viewer::setTessellation(float scale) {
   if (clamped == tessellation_) return say("tessellation already at its limit");
   tessellation_ = clamped;
   scene_.retessellate(tessellation_);
-  gpuScene_ = renderer_.upload(scene_, settings_.textures,
-                               settings_.environment);  // waits for frames in flight
+  uploadScene();  // waits for frames in flight
   char text[96];
   std::snprintf(text, sizeof(text), "tessellation x%g: %s triangles", double(tessellation_),
                 withThousands(gpuScene_.triangles).c_str());
@@ -163,17 +185,19 @@ void Viewer::autoTessellate() {
   VkExtent2D extent = swapchain_.extent();
   tessellateForView(scene_, ViewSize{camera_.camera(), extent.width, extent.height},
                     kMaxErrorPixels);
-  gpuScene_ = renderer_.upload(scene_, settings_.textures, settings_.environment);
+  uploadScene();
   say("automatic tessellation for this view (chord error <= 0.5 px): " +
       withThousands(gpuScene_.triangles) + " triangles");
 }
 
-// The texture options are baked into the material sets at upload.
-void Viewer::applyTextureOptions(const std::string& message) {
-  gpuScene_ = renderer_.upload(scene_, settings_.textures, settings_.environment);
-  bool textured = std::any_of(gpuScene_.draws.begin(), gpuScene_.draws.end(),
-                              [](const DrawItem& draw) { return draw.textured; });
-  say(textured ? message : message + " (no textured material in this scene)");
+// Per-frame switches: the filter picks the material sets bound, bump and mip
+// tint the flags pushed per draw.
+bool Viewer::applyTextureOptions(const TextureOptions& textures, const std::string& message) {
+  FrameSettings next = settings_;
+  next.textures = textures;
+  if (!applySettings(next)) return false;
+  say(gpuScene_.anyTextured ? message : message + " (no textured material in this scene)");
+  return true;
 }
 
 void Viewer::reloadShaders() {
@@ -235,10 +259,12 @@ OverlayText Viewer::overlayText() const {
     text.status.push_back(line);
   }
   text.status.push_back("H help");
-  float columnWidth = float(extent.width) / float(views);
-  for (size_t i = 0; i < settings_.splitModels.size(); ++i)
-    text.columnLabels.push_back({std::floor(columnWidth * float(i)),
-                                 std::string(shadingModelName(settings_.splitModels[i]))});
+  if (!settings_.splitModels.empty()) {
+    std::vector<ScreenColumn> columns = splitColumns(extent.width, uint32_t(views));
+    for (size_t i = 0; i < views; ++i)
+      text.columnLabels.push_back({float(columns[i].left),
+                                   std::string(shadingModelName(settings_.splitModels[i]))});
+  }
   text.message = message_;
   text.messageIsError = messageIsError_;
   if (helpVisible_) {

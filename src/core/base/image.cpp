@@ -4,6 +4,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <system_error>
 
@@ -31,6 +32,15 @@ glm::u8vec4 ImageU8::at(uint32_t x, uint32_t y) const {
 void ImageU8::set(uint32_t x, uint32_t y, glm::u8vec4 value) {
   uint8_t* p = &pixels[(size_t(y) * width + x) * 4];
   p[0] = value.r, p[1] = value.g, p[2] = value.b, p[3] = value.a;
+}
+
+ImageU8 cropColumns(const ImageU8& image, uint32_t left, uint32_t width) {
+  assert(left + width <= image.width);
+  ImageU8 part(width, image.height);
+  for (uint32_t y = 0; y < image.height; ++y)
+    std::copy_n(&image.pixels[(size_t(y) * image.width + left) * 4], size_t(width) * 4,
+                &part.pixels[size_t(y) * width * 4]);
+  return part;
 }
 
 float linearToSrgb(float linear) {

@@ -33,6 +33,9 @@ struct ImageU8 {
   void set(uint32_t x, uint32_t y, glm::u8vec4 value);
 };
 
+// Pixel columns [left, left + width) of `image`, every row.
+ImageU8 cropColumns(const ImageU8& image, uint32_t left, uint32_t width);
+
 // The sRGB transfer functions (IEC 61966-2-1).
 float linearToSrgb(float linear);
 float srgbToLinear(float encoded);

@@ -123,6 +123,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     draw.worldBounds = transformBounds(meshBounds[object.mesh], object.transform);
     draw.transparent = material.transparency > 0.0f;
     gpuScene.anyTransparent |= draw.transparent;
+    gpuScene.anyTextured |= draw.textured;
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
   }

@@ -22,7 +22,7 @@ struct DrawItem {
   int32_t vertexOffset = 0;
   gpu::DrawConstants constants{};  // material and object index, pushed per draw
   bool textured = false;  // the material has a texture: drawn by the textured pipelines
-  VkDescriptorSet materialSet = VK_NULL_HANDLE;  // set 1 when textured (passes/scene_textures)
+  uint32_t material = 0;  // textured: which material's set 1 it binds (passes/scene_textures)
   Bounds worldBounds;        // the mesh's box, transformed: what culling tests
   bool transparent = false;  // blended after the opaque draws, back to front
 };
@@ -48,6 +48,7 @@ struct GpuScene {
   uint64_t triangles = 0;
   LightLayout lights;
   bool anyTransparent = false;
+  bool anyTextured = false;
 };
 
 // Objects whose material asks for a UV projection draw a copy of their mesh
