@@ -5,8 +5,8 @@
 #include <functional>
 #include <memory>
 
-#include "core/scene/environment.h"
 #include "core/base/image.h"
+#include "core/scene/environment.h"
 #include "core/scene/scene.h"
 
 namespace shadelab::test {

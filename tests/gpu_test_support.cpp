@@ -22,7 +22,9 @@ Renderer& sharedRenderer() {
   return *renderer;
 }
 
-void GpuTest::SetUp() { sharedContext().resetValidationReport(); }
+void GpuTest::SetUp() {
+  sharedContext().resetValidationReport();
+}
 
 void GpuTest::TearDown() {
   ValidationReport report = sharedContext().validationReport();
@@ -48,17 +50,16 @@ ImageU8 loadGolden(const std::string& name) {
 ::testing::AssertionResult matchesImage(const ImageU8& expected, const ImageU8& actual,
                                         const ImageTolerance& tolerance) {
   if (expected.width != actual.width || expected.height != actual.height)
-    return ::testing::AssertionFailure() << "size " << actual.width << "x" << actual.height
-                                         << " differs from expected " << expected.width << "x"
-                                         << expected.height;
+    return ::testing::AssertionFailure()
+           << "size " << actual.width << "x" << actual.height << " differs from expected "
+           << expected.width << "x" << expected.height;
   ImageDifference difference = compareImages(expected, actual, tolerance.pixelThreshold);
   std::ostringstream numbers;
   numbers << "PSNR " << difference.psnr << " dB (min " << tolerance.minPsnr << "), RMSE "
           << difference.rmse << ", max diff " << difference.maxDifference << ", "
           << 100.0 * difference.fractionOverThreshold << "% pixels over "
           << tolerance.pixelThreshold << " (max " << 100.0 * tolerance.maxFractionOver << "%)";
-  if (withinTolerance(difference, tolerance))
-    return ::testing::AssertionSuccess() << numbers.str();
+  if (withinTolerance(difference, tolerance)) return ::testing::AssertionSuccess() << numbers.str();
   return ::testing::AssertionFailure() << numbers.str();
 }
 

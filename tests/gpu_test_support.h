@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "core/vulkan/context.h"
 #include "core/metrics/metrics.h"
+#include "core/vulkan/context.h"
 #include "passes/renderer.h"
 
 namespace shadelab::test {

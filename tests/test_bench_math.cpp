@@ -5,11 +5,11 @@
 
 #include <algorithm>
 
-#include "core/metrics/chart.h"
-#include "core/vulkan/depth.h"
-#include "core/metrics/error_metric.h"
 #include "core/base/errors.h"
+#include "core/metrics/chart.h"
+#include "core/metrics/error_metric.h"
 #include "core/metrics/pareto.h"
+#include "core/vulkan/depth.h"
 #include "measure/benchmark.h"
 #include "measure/quality.h"
 

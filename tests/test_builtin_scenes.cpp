@@ -131,9 +131,9 @@ std::vector<std::string> sceneDifferences(const Scene& a, const Scene& b) {
   diff.list("meshes", a.meshes, b.meshes, [&](const std::string& path, auto& x, auto& y) {
     diff.field(path + ".indices", x.indices, y.indices);
     diff.field(path + ".vertices.size()", x.vertices.size(), y.vertices.size());
-    bool same = x.vertices.size() == y.vertices.size() &&
-                std::memcmp(x.vertices.data(), y.vertices.data(),
-                            x.vertices.size() * sizeof(Vertex)) == 0;
+    bool same =
+        x.vertices.size() == y.vertices.size() &&
+        std::memcmp(x.vertices.data(), y.vertices.data(), x.vertices.size() * sizeof(Vertex)) == 0;
     diff.field(path + ".vertices (bytes)", same, true);
   });
   diff.list("objects", a.objects, b.objects, [&](const std::string& path, auto& x, auto& y) {

@@ -193,8 +193,8 @@ TEST_F(Cli, ScenesPrintWritesTheFileThatRendersLikeTheBuiltIn) {
     ASSERT_EQ(printed.exitCode, 0) << readText(copy);
     std::string asset = std::string(SHADELAB_ASSET_DIR) + "/scenes/" + name + ".json";
     EXPECT_EQ(readText(copy), readText(asset)) << "the file in assets/scenes, byte for byte";
-    for (const auto& [scene, png] : {std::pair{name, name + "-builtin.png"},
-                                     std::pair{copy, name + "-copy.png"}}) {
+    for (const auto& [scene, png] :
+         {std::pair{name, name + "-builtin.png"}, std::pair{copy, name + "-copy.png"}}) {
       CommandResult r = run("render " + scene + " --size 160x90 -o " + out(png));
       ASSERT_EQ(r.exitCode, 0) << r.output;
     }
@@ -208,8 +208,7 @@ TEST_F(Cli, ScenesPrintWritesTheFileThatRendersLikeTheBuiltIn) {
 TEST_F(Cli, ScenesPrintUnknownNameIsAnInputError) {
   CommandResult r = run("scenes --print no-such-scene");
   EXPECT_EQ(r.exitCode, 2) << r.output;
-  EXPECT_NE(r.output.find("unknown built-in scene 'no-such-scene'"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("unknown built-in scene 'no-such-scene'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("bump, default, dense"), std::string::npos) << "lists the names";
   EXPECT_EQ(r.output.find('{'), std::string::npos) << "no JSON printed";
 }
@@ -263,7 +262,8 @@ TEST_F(Cli, BadSwitchValuesGetOneMessage) {
     std::string option = command.substr(command.rfind(" --") + 1);
     option = option.substr(0, option.find(' '));
     EXPECT_NE(r.output.find(option + " 'maybe': expected one of on, off"), std::string::npos)
-        << command << "\n" << r.output;
+        << command << "\n"
+        << r.output;
     EXPECT_EQ(filesLeft(), 0u) << command;
   }
 }

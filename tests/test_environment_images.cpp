@@ -5,11 +5,11 @@
 // background-only render; goldens with must-fail twins.
 #include <cmath>
 
-#include "core/vulkan/depth.h"
-#include "core/trace/optics.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/texture.h"
 #include "core/scene/transform.h"
+#include "core/trace/optics.h"
+#include "core/vulkan/depth.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
 
@@ -110,8 +110,7 @@ class MirrorFloor : public GpuTest {
 };
 
 TEST_F(MirrorFloor, ReflectsTheWorldSpaceMirrorDirection) {
-  ImageRgba image =
-      renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong}).image;
+  ImageRgba image = renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong}).image;
   auto [worst, count] = worstOver(
       image, [&](glm::vec3 ray) { return encodeDirection(reflectionDirection(up, -ray)); });
   EXPECT_GT(count, 200);
@@ -134,8 +133,7 @@ TEST_F(MirrorFloor, ReflectsTheWorldSpaceMirrorDirection) {
 TEST_F(MirrorFloor, TotalInternalReflectionFallsBackToReflection) {
   scene.objects[0].material = environmentOnly(0.0f, 1.0f);
   scene.objects[0].material.ior = 0.8f;
-  ImageRgba image =
-      renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong}).image;
+  ImageRgba image = renderer().renderToImage(scene, {kWidth, kHeight, ShadingModel::Phong}).image;
   for (float value : image.pixels) ASSERT_TRUE(std::isfinite(value));
   int totallyReflected = 0, transmitted = 0;
   auto [worst, count] = worstOver(

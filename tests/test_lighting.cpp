@@ -1,12 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <initializer_list>
 #include <limits>
 #include <span>
 #include <vector>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/scene/lighting.h"
 

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "core/metrics/metrics.h"
 #include "core/base/stats.h"
+#include "core/metrics/metrics.h"
 
 namespace shadelab {
 namespace {

@@ -1,13 +1,12 @@
 // The name tables (core/base/names.h) that the command line, the scene format
 // and messages share.
-#include "core/base/names.h"
-
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <set>
 
 #include "core/base/errors.h"
+#include "core/base/names.h"
 #include "core/scene/procedural_textures.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"

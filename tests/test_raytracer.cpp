@@ -8,13 +8,13 @@
 #include <limits>
 #include <random>
 
-#include "core/trace/bvh.h"
 #include "core/base/errors.h"
 #include "core/scene/lighting.h"
+#include "core/scene/transform.h"
+#include "core/trace/bvh.h"
 #include "core/trace/ray.h"
 #include "core/trace/raytracer.h"
 #include "core/trace/trace_shapes.h"
-#include "core/scene/transform.h"
 
 namespace shadelab {
 namespace {

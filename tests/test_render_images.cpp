@@ -31,7 +31,8 @@ class ShadingGolden : public GpuTest, public ::testing::WithParamInterface<Golde
 TEST_P(ShadingGolden, MatchesGolden) {
   auto [sceneName, model] = GetParam();
   ImageU8 image = render(builtinScene(sceneName), small(model));
-  EXPECT_TRUE(matchesGolden(std::string(sceneName) + "-" + std::string(shadingModelName(model)), image));
+  EXPECT_TRUE(
+      matchesGolden(std::string(sceneName) + "-" + std::string(shadingModelName(model)), image));
 }
 
 std::vector<GoldenCase> goldenCases() {
@@ -142,8 +143,8 @@ Scene singleSphere(glm::vec3 eye) {
   scene.camera.at = {0.0f, 0.0f, 0.0f};
   if (glm::length(eye) < 1e-6f) scene.camera.at = {0.0f, 0.0f, -1.0f};
   scene.lights.push_back({});
-  scene.objects.push_back({"sphere", scene.addMesh(makeUvSphere(1.0f, 32, 16)), glm::mat4(1.0f),
-                           Material{}});
+  scene.objects.push_back(
+      {"sphere", scene.addMesh(makeUvSphere(1.0f, 32, 16)), glm::mat4(1.0f), Material{}});
   return scene;
 }
 
@@ -248,9 +249,9 @@ TEST_F(FrameSettingsOnOneUpload, RefusedSettingsLeaveTheAppliedOnes) {
     EXPECT_THROW(renderer.applyFrameSettings(gpuScene, bad), InputError);
   EXPECT_EQ(renderer.frameSettings().msaaSamples, 1u);
   EXPECT_EQ(renderer.frameSettings().width, 96u);
-  EXPECT_EQ(compareImages(render(scene, settings), recordFrame(renderer, gpuScene, scene))
-                .maxDifference,
-            0);
+  EXPECT_EQ(
+      compareImages(render(scene, settings), recordFrame(renderer, gpuScene, scene)).maxDifference,
+      0);
 }
 
 }  // namespace
@@ -266,7 +267,8 @@ TEST(ValidationLayer, CountsAnInvalidCall) {
   context.resetValidationReport();
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.anisotropyEnable = VK_TRUE;
-  info.maxAnisotropy = 1000.0f;  // above maxSamplerAnisotropy: VUID-VkSamplerCreateInfo-anisotropyEnable-01071
+  info.maxAnisotropy =
+      1000.0f;  // above maxSamplerAnisotropy: VUID-VkSamplerCreateInfo-anisotropyEnable-01071
   info.maxLod = 1.0f;
   VkSampler sampler = VK_NULL_HANDLE;
   vkCreateSampler(context.device(), &info, nullptr, &sampler);

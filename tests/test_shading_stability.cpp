@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "core/scene/lighting.h"
-#include "core/vulkan/gpu_scene.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
 #include "core/scene/transform.h"
+#include "core/vulkan/gpu_scene.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {
@@ -25,7 +25,9 @@ using ShadingStability = GpuTest;
 const ShadingModel kLitModels[] = {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
                                    ShadingModel::BlinnPhong};
 
-float luminance(glm::vec4 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+float luminance(glm::vec4 c) {
+  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
 
 float peakLuminance(const ImageRgba& image) {
   float peak = 0.0f;
@@ -80,7 +82,11 @@ void addEightLights(Scene& scene) {
       {LightType::Point, {-0.8f, 0.5f, 1.0f}, {}, {0.10f, 0.20f, 0.35f}, {0.5f, 0.20f, 0.10f}},
       {LightType::Point, {0.2f, -0.9f, 0.8f}, {}, {0.20f, 0.10f, 0.05f}, {1.0f, 0.00f, 0.30f}},
       {LightType::Point, {0.0f, 0.0f, -2.0f}, {}, {0.90f, 0.90f, 0.90f}, {1.0f, 0.00f, 0.00f}},
-      {LightType::Directional, {}, {-0.3f, -0.2f, -1.0f}, {0.15f, 0.10f, 0.10f}, {1.0f, 0.0f, 0.0f}},
+      {LightType::Directional,
+       {},
+       {-0.3f, -0.2f, -1.0f},
+       {0.15f, 0.10f, 0.10f},
+       {1.0f, 0.0f, 0.0f}},
       {LightType::Directional, {}, {0.5f, 0.3f, -0.6f}, {0.05f, 0.12f, 0.08f}, {1.0f, 0.0f, 0.0f}},
       {LightType::Directional, {}, {0.0f, 0.0f, 1.0f}, {0.90f, 0.00f, 0.00f}, {1.0f, 0.0f, 0.0f}},
       {LightType::Point, {-0.3f, 0.7f, 0.4f}, {}, {0.08f, 0.08f, 0.12f}, {1.0f, 0.50f, 0.00f}},
@@ -118,8 +124,8 @@ Scene gridScene(const Material& material) {
   return scene;
 }
 
-const Material kGridMaterial{{0.30f, 0.20f, 0.10f}, {0.50f, 0.35f, 0.20f}, {0.30f, 0.40f, 0.25f},
-                             20.0f};
+const Material kGridMaterial{
+    {0.30f, 0.20f, 0.10f}, {0.50f, 0.35f, 0.20f}, {0.30f, 0.40f, 0.25f}, 20.0f};
 
 // Per mode, the GPU colour at a vertex (flat: inside a triangle, whose one
 // colour is the equation at the centroid) equals the C++ equation with all
@@ -131,8 +137,7 @@ TEST_P(EquationAgreement, GpuColourMatchesCppEquationWithinOneLevel) {
   ShadingModel model = GetParam();
   Scene scene = gridScene(kGridMaterial);
   addEightLights(scene);
-  ImageRgba image =
-      renderer().renderToImage(scene, {kGridImage, kGridImage, model}).image;
+  ImageRgba image = renderer().renderToImage(scene, {kGridImage, kGridImage, model}).image;
   bool blinn = model == ShadingModel::BlinnPhong;
 
   glm::vec3 expected, actual;
@@ -153,8 +158,8 @@ TEST_P(EquationAgreement, GpuColourMatchesCppEquationWithinOneLevel) {
     actual = glm::vec3(image.at(32, 31));
   }
   std::printf("%s: expected (%.4f %.4f %.4f) gpu (%.4f %.4f %.4f)\n",
-              std::string(shadingModelName(model)).c_str(),
-              expected.r, expected.g, expected.b, actual.r, actual.g, actual.b);
+              std::string(shadingModelName(model)).c_str(), expected.r, expected.g, expected.b,
+              actual.r, actual.g, actual.b);
   EXPECT_LE(largestChannelError(expected, actual), kOneLevel);
   // The comparison is sharp: dropping one light moves the colour by more than a level.
   Scene fewer = scene;
@@ -208,7 +213,9 @@ Scene coarseSphere(uint32_t level) {
   scene.camera.fovyDegrees = 45.0f;
   scene.ambient = glm::vec3(0.15f);
   scene.lights.push_back({LightType::Point, {2.0f, 3.0f, 3.0f}, {}, glm::vec3(1.0f), {1, 0, 0}});
-  scene.objects.push_back({"ball", scene.addMesh(makeIcosphere(1.0f, level)), glm::mat4(1.0f),
+  scene.objects.push_back({"ball",
+                           scene.addMesh(makeIcosphere(1.0f, level)),
+                           glm::mat4(1.0f),
                            {glm::vec3(0.1f), {0.6f, 0.5f, 0.4f}, glm::vec3(0.4f), 24.0f}});
   return scene;
 }
@@ -277,8 +284,8 @@ TEST_F(ShadingStability, FlatGivesEachTriangleExactlyOneColour) {
   EXPECT_GE(flat.trianglesChecked, 25u);
   EXPECT_EQ(flat.trianglesVarying, 0u);
   // The check can fail: Gouraud's interpolated colours vary inside triangles.
-  FacetCheck gouraud = checkFacets(
-      scene, renderer().renderToImage(scene, {480, 360, ShadingModel::Gouraud}).image);
+  FacetCheck gouraud =
+      checkFacets(scene, renderer().renderToImage(scene, {480, 360, ShadingModel::Gouraud}).image);
   EXPECT_GE(gouraud.trianglesVarying, gouraud.trianglesChecked / 2);
 }
 
@@ -291,10 +298,11 @@ TEST_F(ShadingStability, FacetingErrorFallsAsTessellationRises) {
     RenderSettings flat = size;
     flat.shadingModel = ShadingModel::Flat;
     double rmse =
-        compareImages(reference, encodeSrgb8(renderer().renderToImage(coarseSphere(level), flat).image))
+        compareImages(reference,
+                      encodeSrgb8(renderer().renderToImage(coarseSphere(level), flat).image))
             .rmse;
-    std::printf("flat icosphere level %u (%5u triangles): RMSE %.3f against Phong level 6\n",
-                level, 20u << (2 * level), rmse);
+    std::printf("flat icosphere level %u (%5u triangles): RMSE %.3f against Phong level 6\n", level,
+                20u << (2 * level), rmse);
     EXPECT_LT(rmse, previous) << "level " << level;
     if (level == 1) first = rmse;
     previous = rmse;
@@ -317,8 +325,8 @@ TEST_F(ShadingStability, NonUniformScaleNeedsTheInverseTranspose) {
   Material material{glm::vec3(0.1f), {0.6f, 0.6f, 0.6f}, glm::vec3(0.3f), 8.0f};
   // makePlane lies in XZ with normal +Y: stand it up to face +z, tilt it 50
   // degrees about y, then stretch x by 3.
-  glm::mat4 model = scaling({3.0f, 1.0f, 1.0f}) * rotationY(glm::radians(50.0f)) *
-                    rotationX(glm::radians(90.0f));
+  glm::mat4 model =
+      scaling({3.0f, 1.0f, 1.0f}) * rotationY(glm::radians(50.0f)) * rotationX(glm::radians(90.0f));
   scene.objects.push_back({"plane", scene.addMesh(makePlane(2.0f, 4)), model, material});
   glm::vec3 origin = glm::vec3(model * glm::vec4(0, 0, 0, 1));
   glm::vec3 trueNormal = glm::normalize(glm::cross(glm::vec3(model * glm::vec4(1, 0, 0, 0)),
@@ -343,9 +351,10 @@ TEST_F(ShadingStability, NonUniformScaleNeedsTheInverseTranspose) {
   };
   float correct = worstError(NormalTransform::InverseTranspose);
   float wrong = worstError(NormalTransform::ModelView);
-  std::printf("non-uniform scale: worst error %.4f with the inverse transpose, %.4f with the "
-              "model-view matrix\n",
-              correct, wrong);
+  std::printf(
+      "non-uniform scale: worst error %.4f with the inverse transpose, %.4f with the "
+      "model-view matrix\n",
+      correct, wrong);
   EXPECT_LE(correct, kOneLevel);
   EXPECT_GT(wrong, 20.0f * kOneLevel);
 }
@@ -372,8 +381,8 @@ TEST_F(ShadingStability, DegenerateInputsGiveNoNaNOrInf) {
 
   // Left: a quad touching light 0. Right top/bottom: shininess 0 and 1000.
   Mesh quad = makePlane(0.8f, 2);
-  scene.objects.push_back({"touching", scene.addMesh(quad),
-                           translation({-1.4f, 0.6f, 0.0f}) * standUp, matte});
+  scene.objects.push_back(
+      {"touching", scene.addMesh(quad), translation({-1.4f, 0.6f, 0.0f}) * standUp, matte});
   Material dull = matte, sharp = matte;
   dull.shininess = 0.0f;
   sharp.shininess = 1000.0f;
@@ -386,8 +395,8 @@ TEST_F(ShadingStability, DegenerateInputsGiveNoNaNOrInf) {
     if (i % 3 == 0) broken.vertices[i].normal = glm::vec3(0.0f);
     if (i % 3 == 1) broken.vertices[i].normal = glm::vec3(std::nanf(""));
   }
-  scene.objects.push_back(
-      {"broken normals", scene.addMesh(broken), translation({-0.9f, -0.9f, 0.0f}) * standUp, matte});
+  scene.objects.push_back({"broken normals", scene.addMesh(broken),
+                           translation({-0.9f, -0.9f, 0.0f}) * standUp, matte});
   // Below it all, a plane lit only from behind: exactly the ambient term.
   scene.objects.push_back({"back-lit", scene.addMesh(makePlane(4.0f, 1)),
                            translation({0.0f, 0.0f, -1.0f}) * standUp, matte});

@@ -169,8 +169,10 @@ TEST_F(TextureUpload, ImagesAppearUnflippedOnAPlaneFacingTheCamera) {
 // Where a coordinate outside 0..1 lands (the Vulkan spec's wrap functions).
 float wrapped(TextureWrap wrap, float x) {
   switch (wrap) {
-    case TextureWrap::Repeat: return x - std::floor(x);
-    case TextureWrap::ClampToEdge: return std::clamp(x, 0.0f, 0.999f);
+    case TextureWrap::Repeat:
+      return x - std::floor(x);
+    case TextureWrap::ClampToEdge:
+      return std::clamp(x, 0.0f, 0.999f);
     case TextureWrap::MirroredRepeat: {
       float m = x - 2.0f * std::floor(x / 2.0f);
       return m < 1.0f ? m : 2.0f - m;

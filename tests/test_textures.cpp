@@ -12,8 +12,8 @@
 #include "core/base/image.h"
 #include "core/scene/procedural_textures.h"
 #include "core/scene/texture.h"
-#include "core/trace/trace_textures.h"
 #include "core/scene/uv_mapping.h"
+#include "core/trace/trace_textures.h"
 
 namespace shadelab {
 namespace {

@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "core/metrics/metrics.h"
-#include "core/trace/raytracer.h"
 #include "core/scene/scene.h"
+#include "core/trace/raytracer.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {

@@ -9,8 +9,8 @@
 #include <cstring>
 #include <limits>
 
-#include "core/trace/raytracer.h"
 #include "core/scene/transform.h"
+#include "core/trace/raytracer.h"
 
 namespace shadelab {
 namespace {

@@ -11,10 +11,10 @@
 #include "core/base/image.h"
 #include "core/metrics/metrics.h"
 #include "core/scene/procedural_textures.h"
-#include "core/trace/raytracer.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/texture.h"
 #include "core/scene/transform.h"
+#include "core/trace/raytracer.h"
 #include "environment_test_support.h"
 #include "gpu_test_support.h"
 

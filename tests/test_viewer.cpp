@@ -11,12 +11,12 @@
 #include <regex>
 #include <string>
 
-#include "view/glsl_compiler.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene.h"
 #include "gpu_test_support.h"
 #include "run_command.h"
 #include "view/camera_controller.h"
+#include "view/glsl_compiler.h"
 
 namespace shadelab::test {
 namespace {

@@ -9,10 +9,10 @@
 #include <glm/gtc/constants.hpp>
 
 #include "core/base/errors.h"
-#include "view/glsl_compiler.h"
 #include "core/vulkan/shader_table.h"
 #include "passes/renderer.h"
 #include "view/camera_controller.h"
+#include "view/glsl_compiler.h"
 #include "view/viewer_script.h"
 #include "view/window.h"
 

@@ -22,11 +22,13 @@ Size parseSize(const std::string& text, const std::string& option) {
   return size;
 }
 
-std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option) {
+std::vector<ShadingModel> parseShadingModelList(const std::string& text,
+                                                const std::string& option) {
   std::vector<ShadingModel> models;
   std::stringstream stream(text);
   std::string item;
-  while (std::getline(stream, item, ',')) models.push_back(parseNamed(kShadingModelNames, item, option));
+  while (std::getline(stream, item, ','))
+    models.push_back(parseNamed(kShadingModelNames, item, option));
   if (models.empty()) throw InputError(option + " '" + text + "': expected at least one model");
   return models;
 }

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "core/vulkan/context.h"
-#include "core/vulkan/depth.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
+#include "core/vulkan/context.h"
+#include "core/vulkan/depth.h"
 
 namespace shadelab {
 

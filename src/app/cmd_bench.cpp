@@ -138,8 +138,7 @@ int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& globa
   std::printf("\n");
   for (Projection projection : {Projection::Perspective, Projection::Orthographic})
     for (float near : options.nearPlanes) {
-      std::printf("%-13s %9g",
-                  std::string(nameOf(kProjectionNames, projection)).c_str(), near);
+      std::printf("%-13s %9g", std::string(nameOf(kProjectionNames, projection)).c_str(), near);
       for (DepthMode depth : valuesOf(kDepthModeNames))
         for (const ZFightMeasurement& m : results)
           if (m.projection == projection && m.depth == depth && m.near == near)

@@ -14,10 +14,10 @@
 #include "core/base/files.h"
 #include "core/base/split_screen.h"
 #include "core/metrics/metrics.h"
+#include "core/metrics/sheet.h"
+#include "core/scene/scene_loader.h"
 #include "core/trace/raytracer.h"
 #include "core/trace/reflection_regions.h"
-#include "core/scene/scene_loader.h"
-#include "core/metrics/sheet.h"
 #include "measure/reference.h"
 #include "passes/renderer.h"
 
@@ -181,8 +181,7 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::Range(1u, 256u));
   command
       ->add_option("--shadows", options->shadows,
-                   namedHelp("Shadows in the traced reference (off: shading alone)",
-                             kOnOffNames))
+                   namedHelp("Shadows in the traced reference (off: shading alone)", kOnOffNames))
       ->capture_default_str();
   return [options, &global] { return runCompare(*options, global); };
 }

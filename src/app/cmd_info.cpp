@@ -2,20 +2,25 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/vulkan/depth.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
+#include "core/vulkan/depth.h"
 
 namespace shadelab {
 namespace {
 
 const char* deviceTypeName(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU (software)";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "CPU (software)";
+    default:
+      return "other";
   }
 }
 
@@ -38,11 +43,11 @@ int runInfo(const GlobalOptions& global) {
   std::printf("vulkan:          %s\n", versionString(device.apiVersion).c_str());
   std::printf("validation:      %s\n", context->validationEnabled() ? "on" : "off");
   std::printf("features used:   dynamic rendering, synchronization2, geometry shader (flat)\n");
-  std::printf("optional:        sampler anisotropy %s (max %.0f), wireframe %s, "
-              "pipeline statistics %s\n",
-              features.samplerAnisotropy ? "yes" : "no", properties.limits.maxSamplerAnisotropy,
-              features.fillModeNonSolid ? "yes" : "no",
-              features.pipelineStatisticsQuery ? "yes" : "no");
+  std::printf(
+      "optional:        sampler anisotropy %s (max %.0f), wireframe %s, "
+      "pipeline statistics %s\n",
+      features.samplerAnisotropy ? "yes" : "no", properties.limits.maxSamplerAnisotropy,
+      features.fillModeNonSolid ? "yes" : "no", features.pipelineStatisticsQuery ? "yes" : "no");
   std::string depthModes;
   for (DepthMode mode : valuesOf(kDepthModeNames)) {
     VkFormatProperties format;

@@ -10,9 +10,9 @@
 #include "app/commands.h"
 #include "core/base/errors.h"
 #include "core/base/image.h"
+#include "core/base/stats.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene_loader.h"
-#include "core/base/stats.h"
 #include "core/scene/texture.h"
 #include "measure/quality.h"
 #include "passes/renderer.h"
@@ -116,10 +116,11 @@ void printTimings(const RenderStats& stats) {
   std::vector<double> wall(stats.wallMs.begin() + long(warmup), stats.wallMs.end());
   std::printf("first frame: %.2f ms wall, %.2f ms device\n", stats.wallMs.front(),
               stats.deviceMs.front());
-  std::printf("steady (%zu frames after %zu warm-up): device median %.3f ms, p95 %.3f ms; "
-              "wall median %.3f ms, mean %.3f ms, p95 %.3f ms\n",
-              device.size(), warmup, median(device), percentile(device, 95.0), median(wall),
-              mean(wall), percentile(wall, 95.0));
+  std::printf(
+      "steady (%zu frames after %zu warm-up): device median %.3f ms, p95 %.3f ms; "
+      "wall median %.3f ms, mean %.3f ms, p95 %.3f ms\n",
+      device.size(), warmup, median(device), percentile(device, 95.0), median(wall), mean(wall),
+      percentile(wall, 95.0));
 }
 
 float parseTessellationFactor(const std::string& text) {
@@ -201,52 +202,61 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                       "Built-in scene name or scene file (default: the built-in default scene)");
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
-  command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")
-      ->capture_default_str();
-  CLI::Option* mode = command->add_option(
-      "--mode", options->mode,
-      namedHelp("Shading model (unlit: constant colour, the timing floor)", kShadingModelNames))
-      ->capture_default_str();
-  command->add_option("--frames", options->frames,
-                      "Frames to draw (2 in flight); above 1, prints frame-time statistics")
+  command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  CLI::Option* mode =
+      command
+          ->add_option("--mode", options->mode,
+                       namedHelp("Shading model (unlit: constant colour, the timing floor)",
+                                 kShadingModelNames))
+          ->capture_default_str();
+  command
+      ->add_option("--frames", options->frames,
+                   "Frames to draw (2 in flight); above 1, prints frame-time statistics")
       ->capture_default_str()
       ->check(CLI::Range(1u, 100000u));
-  CLI::Option* tess = command->add_option("--tess", options->tessellation,
-                      "Scale the tessellation of procedural shapes and Bezier patches (segments "
-                      "per side x FACTOR, 0.125..16; icosphere levels + log2 FACTOR), or 'auto': "
-                      "from each shape's projected size, chord error within --tess-error")
-      ->capture_default_str();
-  command->add_option("--tess-error", options->tessellationError,
-                      "Screen-space chord error bound of --tess auto, in pixels")
+  CLI::Option* tess =
+      command
+          ->add_option("--tess", options->tessellation,
+                       "Scale the tessellation of procedural shapes and Bezier patches (segments "
+                       "per side x FACTOR, 0.125..16; icosphere levels + log2 FACTOR), or 'auto': "
+                       "from each shape's projected size, chord error within --tess-error")
+          ->capture_default_str();
+  command
+      ->add_option("--tess-error", options->tessellationError,
+                   "Screen-space chord error bound of --tess auto, in pixels")
       ->capture_default_str()
       ->check(CLI::Range(0.01f, 100.0f));
-  command->add_option("--simplify", options->simplify,
-                      "Simplify loaded (glTF) meshes until their error would exceed PX pixels "
-                      "at this view (meshoptimizer); 0: off")
+  command
+      ->add_option("--simplify", options->simplify,
+                   "Simplify loaded (glTF) meshes until their error would exceed PX pixels "
+                   "at this view (meshoptimizer); 0: off")
       ->capture_default_str()
       ->check(CLI::Range(0.0f, 100.0f));
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
-  command->add_option("--env", options->environment,
-                      namedHelp("Environment mapping (reflections, refraction, skybox) when the "
-                                "scene has an environment",
-                                kOnOffNames))
+  command
+      ->add_option("--env", options->environment,
+                   namedHelp("Environment mapping (reflections, refraction, skybox) when the "
+                             "scene has an environment",
+                             kOnOffNames))
       ->capture_default_str();
   command->add_option("--filter", options->filter,
                       "Texture filter for every texture, overriding the materials' samplers: "
                       "nearest (base level, no mipmaps), bilinear (nearest mip level), "
                       "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
-  command->add_option("--bump", options->bump,
-                      namedHelp("Bump mapping (normal and height maps; Phong and Blinn-Phong only)",
-                                kOnOffNames))
+  command
+      ->add_option("--bump", options->bump,
+                   namedHelp("Bump mapping (normal and height maps; Phong and Blinn-Phong only)",
+                             kOnOffNames))
       ->capture_default_str();
   command->add_flag("--mip-tint", options->mipTint,
                     "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
                     "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
-  command->add_option("--depth", options->depth,
-                   namedHelp("Depth buffer (reversed: D32_SFLOAT, near -> 1, far -> 0)",
-                             kDepthModeNames))
+  command
+      ->add_option(
+          "--depth", options->depth,
+          namedHelp("Depth buffer (reversed: D32_SFLOAT, near -> 1, far -> 0)", kDepthModeNames))
       ->capture_default_str();
   CLI::Option* quality =
       command
@@ -255,11 +265,16 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                        "--metric units: a mean FLIP or RMSE ceiling, or a PSNR (dB) or SSIM floor")
           ->excludes(mode)
           ->excludes(tess);
-  command->add_option("--metric", options->metric, "Error metric of --quality: flip (mean FLIP), rmse, psnr or ssim")
+  command
+      ->add_option("--metric", options->metric,
+                   "Error metric of --quality: flip (mean FLIP), rmse, psnr or ssim")
       ->capture_default_str()
       ->needs(quality);
-  command->add_option("--reference", options->reference, "What --quality measures against: trace (the CPU Whitted ray tracer, 4 spp) or raster "
-                      "(Phong, 4x tessellation, 4x MSAA)")
+  command
+      ->add_option(
+          "--reference", options->reference,
+          "What --quality measures against: trace (the CPU Whitted ray tracer, 4 spp) or raster "
+          "(Phong, 4x tessellation, 4x MSAA)")
       ->capture_default_str()
       ->needs(quality);
   command

@@ -19,8 +19,9 @@ int listScenes() {
     std::printf("%-*s  %s\n", int(width), name.c_str(), builtinSceneDescription(name).c_str());
   // For a reader at a terminal; a pipe gets just the list.
   if (isatty(STDOUT_FILENO))
-    std::printf("\nCopy one to edit: shadelab scenes --print NAME > my.json; "
-                "then shadelab render my.json -o my.png\n");
+    std::printf(
+        "\nCopy one to edit: shadelab scenes --print NAME > my.json; "
+        "then shadelab render my.json -o my.png\n");
   return 0;
 }
 

@@ -8,8 +8,8 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/base/image.h"
-#include "core/trace/raytracer.h"
 #include "core/scene/scene_loader.h"
+#include "core/trace/raytracer.h"
 
 namespace shadelab {
 namespace {

@@ -3,8 +3,8 @@
 // marked, and error against triangle count across the tessellation sweep.
 #include <vector>
 
-#include "core/metrics/error_metric.h"
 #include "core/base/image.h"
+#include "core/metrics/error_metric.h"
 #include "core/metrics/pareto.h"
 #include "measure/benchmark.h"
 

@@ -24,18 +24,18 @@ const std::vector<Reference>& references() {
 }  // namespace
 
 Reference traceReference(uint32_t samplesPerPixel, bool shadows) {
-  return {"trace",
-          "Whitted ray tracer, " + std::to_string(samplesPerPixel) + " spp" +
-              (shadows ? "" : ", no shadows"),
-          [samplesPerPixel, shadows](Renderer&, const Scene& scene, uint32_t width,
-                                     uint32_t height) {
-            TraceSettings settings;
-            settings.width = width;
-            settings.height = height;
-            settings.samplesPerPixel = samplesPerPixel;
-            settings.shadows = shadows;
-            return RayTracer(scene).render(settings).image;
-          }};
+  return {
+      "trace",
+      "Whitted ray tracer, " + std::to_string(samplesPerPixel) + " spp" +
+          (shadows ? "" : ", no shadows"),
+      [samplesPerPixel, shadows](Renderer&, const Scene& scene, uint32_t width, uint32_t height) {
+        TraceSettings settings;
+        settings.width = width;
+        settings.height = height;
+        settings.samplesPerPixel = samplesPerPixel;
+        settings.shadows = shadows;
+        return RayTracer(scene).render(settings).image;
+      }};
 }
 
 const Reference& findReference(const std::string& name, const std::string& option) {

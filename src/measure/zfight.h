@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "core/vulkan/depth.h"
 #include "core/base/image.h"
 #include "core/scene/scene.h"
+#include "core/vulkan/depth.h"
 #include "passes/renderer.h"
 
 namespace shadelab {

@@ -6,8 +6,8 @@
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 
-#include "core/vulkan/barriers.h"
 #include "core/scene/texture.h"
+#include "core/vulkan/barriers.h"
 #include "core/vulkan/vk_check.h"
 
 namespace shadelab {

@@ -7,10 +7,10 @@
 // uploaded as they are. Load time only: build() submits and waits.
 #include <array>
 
+#include "core/base/image.h"
+#include "core/scene/environment.h"
 #include "core/vulkan/barriers.h"
 #include "core/vulkan/context.h"
-#include "core/scene/environment.h"
-#include "core/base/image.h"
 #include "core/vulkan/resources.h"
 #include "passes/equirect_cube_pass.h"
 #include "passes/mip_generation.h"

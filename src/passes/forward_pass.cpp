@@ -65,10 +65,14 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
 // compiles each with the defines of its variants.
 static std::string_view forwardSource(VkShaderStageFlagBits stage) {
   switch (stage) {
-    case VK_SHADER_STAGE_VERTEX_BIT: return "forward_vertex.glsl";
-    case VK_SHADER_STAGE_GEOMETRY_BIT: return "forward_flat.geom";
-    case VK_SHADER_STAGE_FRAGMENT_BIT: return "forward_fragment.glsl";
-    default: return {};
+    case VK_SHADER_STAGE_VERTEX_BIT:
+      return "forward_vertex.glsl";
+    case VK_SHADER_STAGE_GEOMETRY_BIT:
+      return "forward_flat.geom";
+    case VK_SHADER_STAGE_FRAGMENT_BIT:
+      return "forward_fragment.glsl";
+    default:
+      return {};
   }
 }
 

@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "core/scene/shading.h"
 #include "core/vulkan/context.h"
 #include "core/vulkan/depth.h"
 #include "core/vulkan/gpu_scene.h"
 #include "core/vulkan/resources.h"
 #include "core/vulkan/shader_table.h"
-#include "core/scene/shading.h"
 
 namespace shadelab {
 

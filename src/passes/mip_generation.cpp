@@ -3,9 +3,9 @@
 #include <cassert>
 #include <string>
 
-#include "core/vulkan/barriers.h"
 #include "core/base/errors.h"
 #include "core/scene/texture.h"
+#include "core/vulkan/barriers.h"
 
 namespace shadelab {
 

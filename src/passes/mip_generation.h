@@ -16,8 +16,8 @@ class MipGeneration {
   // Throws VulkanError unless the device can blit and linearly filter the
   // texture formats (R8G8B8A8 _SRGB and _UNORM).
   explicit MipGeneration(const Context& context);
-  void record(VkCommandBuffer cmd, VkImage image, uint32_t width, uint32_t height,
-              uint32_t levels, uint32_t layers = 1) const;
+  void record(VkCommandBuffer cmd, VkImage image, uint32_t width, uint32_t height, uint32_t levels,
+              uint32_t layers = 1) const;
 };
 
 }  // namespace shadelab

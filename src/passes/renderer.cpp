@@ -7,9 +7,9 @@
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 
-#include "core/vulkan/barriers.h"
 #include "core/base/errors.h"
 #include "core/base/split_screen.h"
+#include "core/vulkan/barriers.h"
 #include "core/vulkan/vk_check.h"
 
 namespace shadelab {
@@ -320,8 +320,8 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   if (models.empty()) models.push_back(settings.shadingModel);
   std::vector<ScreenColumn> columns = splitColumns(width, uint32_t(models.size()));
   for (size_t i = 0; i < models.size(); ++i) {
-    VkViewport viewport{float(columns[i].left), 0.0f, float(columns[i].width), float(height),
-                        0.0f, 1.0f};
+    VkViewport viewport{float(columns[i].left), 0.0f, float(columns[i].width),
+                        float(height),          0.0f, 1.0f};
     // Opaque draws, the skybox where they left the far plane, then the
     // transparent draws, which write no depth, over both.
     auto firstTransparent = std::find_if(draws.begin(), draws.end(),

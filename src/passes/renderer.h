@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "core/base/image.h"
+#include "core/scene/scene.h"
+#include "core/scene/shading.h"
 #include "core/vulkan/barriers.h"
 #include "core/vulkan/context.h"
 #include "core/vulkan/gpu_scene.h"
-#include "core/base/image.h"
 #include "core/vulkan/resources.h"
-#include "core/scene/scene.h"
-#include "core/scene/shading.h"
 #include "passes/environment_builder.h"
 #include "passes/forward_pass.h"
 #include "passes/scene_textures.h"

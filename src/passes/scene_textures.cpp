@@ -5,9 +5,9 @@
 #include <cstring>
 #include <tuple>
 
-#include "core/vulkan/barriers.h"
 #include "core/base/errors.h"
 #include "core/scene/texture.h"
+#include "core/vulkan/barriers.h"
 #include "core/vulkan/vk_check.h"
 #include "interface.h"
 

@@ -12,10 +12,10 @@
 #include <tuple>
 #include <vector>
 
+#include "core/scene/scene.h"
 #include "core/vulkan/context.h"
 #include "core/vulkan/gpu_scene.h"
 #include "core/vulkan/resources.h"
-#include "core/scene/scene.h"
 #include "passes/mip_generation.h"
 
 namespace shadelab {

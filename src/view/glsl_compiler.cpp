@@ -59,13 +59,26 @@ class FolderIncluder : public glslang::TShader::Includer {
 
 bool stageOf(VkShaderStageFlagBits vulkanStage, EShLanguage& stage) {
   switch (vulkanStage) {
-    case VK_SHADER_STAGE_VERTEX_BIT: stage = EShLangVertex; return true;
-    case VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT: stage = EShLangTessControl; return true;
-    case VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT: stage = EShLangTessEvaluation; return true;
-    case VK_SHADER_STAGE_GEOMETRY_BIT: stage = EShLangGeometry; return true;
-    case VK_SHADER_STAGE_FRAGMENT_BIT: stage = EShLangFragment; return true;
-    case VK_SHADER_STAGE_COMPUTE_BIT: stage = EShLangCompute; return true;
-    default: return false;
+    case VK_SHADER_STAGE_VERTEX_BIT:
+      stage = EShLangVertex;
+      return true;
+    case VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT:
+      stage = EShLangTessControl;
+      return true;
+    case VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT:
+      stage = EShLangTessEvaluation;
+      return true;
+    case VK_SHADER_STAGE_GEOMETRY_BIT:
+      stage = EShLangGeometry;
+      return true;
+    case VK_SHADER_STAGE_FRAGMENT_BIT:
+      stage = EShLangFragment;
+      return true;
+    case VK_SHADER_STAGE_COMPUTE_BIT:
+      stage = EShLangCompute;
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -81,8 +94,9 @@ GlslCompileResult compileGlsl(const std::filesystem::path& directory,
   std::filesystem::path path = directory / variant.source;
   EShLanguage stage;
   if (!stageOf(variant.stage, stage)) {
-    result.log = path.string() + ": not a vertex, tessellation, geometry, fragment or compute "
-                                 "stage";
+    result.log = path.string() +
+                 ": not a vertex, tessellation, geometry, fragment or compute "
+                 "stage";
     return result;
   }
   std::string source;

@@ -20,7 +20,6 @@ struct GlslCompileResult {
 // Compiles `directory`/`variant.source` as `variant.stage` for Vulkan 1.3,
 // with `#define NAME` for each of its defines (glslangValidator's -D);
 // #include resolves inside `directory`.
-GlslCompileResult compileGlsl(const std::filesystem::path& directory,
-                              const ShaderVariant& variant);
+GlslCompileResult compileGlsl(const std::filesystem::path& directory, const ShaderVariant& variant);
 
 }  // namespace shadelab

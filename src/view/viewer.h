@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "core/metrics/metrics.h"
 #include "core/vulkan/context.h"
 #include "core/vulkan/gpu_scene.h"
-#include "core/metrics/metrics.h"
 #include "passes/renderer.h"
 #include "view/camera_controller.h"
 #include "view/overlay.h"

@@ -9,11 +9,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "view/glsl_compiler.h"
-#include "core/scene/lod.h"
 #include "core/base/split_screen.h"
 #include "core/base/stats.h"
+#include "core/scene/lod.h"
 #include "core/scene/texture.h"
+#include "view/glsl_compiler.h"
 #include "view/viewer.h"
 
 #define GLFW_INCLUDE_NONE
@@ -262,8 +262,8 @@ OverlayText Viewer::overlayText() const {
   if (!settings_.splitModels.empty()) {
     std::vector<ScreenColumn> columns = splitColumns(extent.width, uint32_t(views));
     for (size_t i = 0; i < views; ++i)
-      text.columnLabels.push_back({float(columns[i].left),
-                                   std::string(shadingModelName(settings_.splitModels[i]))});
+      text.columnLabels.push_back(
+          {float(columns[i].left), std::string(shadingModelName(settings_.splitModels[i]))});
   }
   text.message = message_;
   text.messageIsError = messageIsError_;

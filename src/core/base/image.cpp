@@ -3,6 +3,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>

@@ -3,9 +3,8 @@
 // form written to PNG. Files go through OpenImageIO.
 #include <cstdint>
 #include <filesystem>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace shadelab {
 

@@ -53,7 +53,8 @@ std::vector<std::string_view> namesOf(const NameTable<E, N>& table) {
 }
 
 // "a, b, c" (or with another separator).
-std::string joinNames(const std::vector<std::string_view>& names, std::string_view separator = ", ");
+std::string joinNames(const std::vector<std::string_view>& names,
+                      std::string_view separator = ", ");
 
 // The value named `text`, or InputError "WHAT 'TEXT': expected one of a, b, c".
 template <typename E, size_t N>

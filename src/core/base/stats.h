@@ -7,7 +7,9 @@ namespace shadelab {
 // Percentile by linear interpolation between closest ranks; p in [0, 100].
 // Returns 0 for an empty sample.
 double percentile(std::vector<double> samples, double p);
-inline double median(const std::vector<double>& samples) { return percentile(samples, 50.0); }
+inline double median(const std::vector<double>& samples) {
+  return percentile(samples, 50.0);
+}
 // The arithmetic mean; 0 for an empty sample.
 double mean(const std::vector<double>& samples);
 

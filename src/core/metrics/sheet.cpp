@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>

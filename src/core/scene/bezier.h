@@ -1,20 +1,20 @@
 #pragma once
 
-#include "core/scene/mesh.h"
-
-#include <glm/glm.hpp>
-
 #include <array>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <vector>
+
+#include "core/scene/mesh.h"
 
 namespace shadelab {
 
 // Cubic curves as the course writes them: p(u) = u^T M G with u = (u^3, u^2, u, 1)
 // and G the four geometry points as rows. In GLM, u^T M is `u * M`.
-glm::vec4 powerBasis(float u);        // (u^3, u^2, u, 1)
-glm::mat4 bezierBasisMatrix();        // M_B
-glm::mat4 interpolatingBasisMatrix(); // M_I: the cubic through its four points at u = 0, 1/3, 2/3, 1
+glm::vec4 powerBasis(float u);  // (u^3, u^2, u, 1)
+glm::mat4 bezierBasisMatrix();  // M_B
+glm::mat4
+interpolatingBasisMatrix();  // M_I: the cubic through its four points at u = 0, 1/3, 2/3, 1
 
 // Bernstein polynomials b0..b3 = (1-u)^3, 3u(1-u)^2, 3u^2(1-u), u^3 and their derivatives.
 glm::vec4 bezierBlending(float u);
@@ -26,14 +26,14 @@ glm::vec3 evalBezierCurveDerivative(const std::array<glm::vec3, 4>& p, float u);
 
 // Row-major control net: control[4*i + j], i along u, j along v.
 struct BezierPatch {
-    std::array<glm::vec3, 16> control;
+  std::array<glm::vec3, 16> control;
 };
 
 struct PatchSample {
-    glm::vec3 position;
-    glm::vec3 dPdu;
-    glm::vec3 dPdv;
-    glm::vec3 normal; // unit; at degenerate points, the limit taken from just inside the patch
+  glm::vec3 position;
+  glm::vec3 dPdu;
+  glm::vec3 dPdv;
+  glm::vec3 normal;  // unit; at degenerate points, the limit taken from just inside the patch
 };
 
 PatchSample evalBezierPatch(const BezierPatch& patch, float u, float v);

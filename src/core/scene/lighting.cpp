@@ -50,8 +50,8 @@ glm::vec3 illuminate(glm::vec3 ambient, std::span<const Light> lights, glm::vec3
   // Zero-length, NaN or infinite normals (bad input) light as ambient only,
   // never NaN: a NaN length fails both comparisons.
   const float lengthN2 = glm::dot(normal, normal);
-  const glm::vec3 N = lengthN2 > 1e-40f && lengthN2 < 1e30f ? normal / std::sqrt(lengthN2)
-                                                           : glm::vec3(0.0f);
+  const glm::vec3 N =
+      lengthN2 > 1e-40f && lengthN2 < 1e30f ? normal / std::sqrt(lengthN2) : glm::vec3(0.0f);
   const glm::vec3 V = safeNormalize(-position);
   glm::vec3 color = ambient * material.ka;
   // Lights in any order, each by its type (the shader relies on makeFrameData

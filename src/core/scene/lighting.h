@@ -4,9 +4,8 @@
 // pixels against it and the CPU reference tracer can light with it:
 //   I = Ia ka + sum_i f_att,i Ip,i [kd (N.L_i) + ks (R_i.V)^n],  f_att = 1/(a + b d + c d^2)
 // Blinn-Phong replaces (R.V)^n with (N.H)^n, H = normalize(L + V).
-#include <span>
-
 #include <glm/glm.hpp>
+#include <span>
 
 #include "core/scene/scene.h"
 

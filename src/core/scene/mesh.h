@@ -2,18 +2,18 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace shadelab {
 
 // Vertex layout shared with the GLSL vertex input (locations 0..3). 48 bytes, tightly packed.
 struct Vertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-    glm::vec2 uv;
-    glm::vec4 tangent;  // xyz tangent along +u, w = handedness (+1/-1) so bitangent = w * cross(normal, tangent)
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+  glm::vec4 tangent;  // xyz tangent along +u, w = handedness (+1/-1) so bitangent = w *
+                      // cross(normal, tangent)
 };
 
 // The pipeline's vertex input description hard-codes these offsets, so a GLM configuration
@@ -25,14 +25,14 @@ static_assert(offsetof(Vertex, uv) == 24);
 static_assert(offsetof(Vertex, tangent) == 32);
 
 struct Bounds {
-    glm::vec3 min{0.0f};
-    glm::vec3 max{0.0f};
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
 };
 
 struct Mesh {
-    std::vector<Vertex> vertices;
-    std::vector<uint32_t> indices;  // triangle list, counter-clockwise front faces seen from outside
-    std::size_t triangleCount() const { return indices.size() / 3; }
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;  // triangle list, counter-clockwise front faces seen from outside
+  std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
 // All shapes centred on the origin, right-handed, y up; counter-clockwise winding seen from outside
@@ -55,20 +55,23 @@ Mesh makeUvSphere(float radius, uint32_t slices, uint32_t stacks);
 // tangents from computeTangents.
 Mesh makeIcosphere(float radius, uint32_t subdivisions);
 // Around the Y axis; 0 < minorRadius < majorRadius, both segment counts >= 3.
-Mesh makeTorus(float majorRadius, float minorRadius, uint32_t majorSegments, uint32_t minorSegments);
+Mesh makeTorus(float majorRadius, float minorRadius, uint32_t majorSegments,
+               uint32_t minorSegments);
 
-// Area-weighted vertex normals (sum of unnormalised face cross products), for meshes without normals.
-// A zero-length result (isolated or degenerate-only vertex) becomes (0,1,0) rather than NaN.
+// Area-weighted vertex normals (sum of unnormalised face cross products), for meshes without
+// normals. A zero-length result (isolated or degenerate-only vertex) becomes (0,1,0) rather than
+// NaN.
 void computeNormals(Mesh& mesh);
 
-// Area-weighted vertex normals that keep hard edges: faces meeting at a vertex are smoothed together
-// only if their normals differ by at most creaseAngleDegrees; otherwise the vertex is split (duplicated
-// with the same position/uv) so each smooth group gets its own normal. 180 smooths everything
-// (same as computeNormals); 0 gives flat facets. Tangents are recomputed if the mesh had them.
-// Vertices with identical positions are treated as one (a 24-vertex box can be smoothed). Each
-// corner sums the faces at its position within the angle of its own face, without chaining through
-// neighbours, so faces more than the angle apart never share a normal. Existing vertices are kept
-// (first smooth group) and split ones are appended; zero-area triangles never cause a split.
+// Area-weighted vertex normals that keep hard edges: faces meeting at a vertex are smoothed
+// together only if their normals differ by at most creaseAngleDegrees; otherwise the vertex is
+// split (duplicated with the same position/uv) so each smooth group gets its own normal. 180
+// smooths everything (same as computeNormals); 0 gives flat facets. Tangents are recomputed if the
+// mesh had them. Vertices with identical positions are treated as one (a 24-vertex box can be
+// smoothed). Each corner sums the faces at its position within the angle of its own face, without
+// chaining through neighbours, so faces more than the angle apart never share a normal. Existing
+// vertices are kept (first smooth group) and split ones are appended; zero-area triangles never
+// cause a split.
 void computeCreaseNormals(Mesh& mesh, float creaseAngleDegrees);
 
 // Per-triangle tangents from positions and UVs (Lengyel's method), accumulated per vertex,

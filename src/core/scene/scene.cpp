@@ -4,7 +4,9 @@
 
 namespace shadelab {
 
-glm::mat4 Camera::viewMatrix() const { return lookAt(eye, at, up); }
+glm::mat4 Camera::viewMatrix() const {
+  return lookAt(eye, at, up);
+}
 
 glm::mat4 Camera::projectionMatrix(float aspect, bool reversedZ) const {
   switch (projection) {

@@ -2,11 +2,10 @@
 // The scene model of DESIGN.md: a camera, an ambient light, point and
 // directional lights, and objects (a mesh, a transform and a material).
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/base/names.h"
 #include "core/scene/environment.h"
@@ -47,10 +46,10 @@ inline constexpr NameTable<LightType, 2> kLightTypeNames = {{
 
 struct Light {
   LightType type = LightType::Point;
-  glm::vec3 position{0.0f, 5.0f, 0.0f};    // point lights, world space
-  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the direction light travels
-  glm::vec3 intensity{1.0f};               // Ip per RGB channel
-  glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // f_att = 1 / (a + b d + c d^2)
+  glm::vec3 position{0.0f, 5.0f, 0.0f};     // point lights, world space
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};   // directional lights: the direction light travels
+  glm::vec3 intensity{1.0f};                // Ip per RGB channel
+  glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // f_att = 1 / (a + b d + c d^2)
 };
 
 // Texture sampling, per texture slot of a material (glTF samplers map here).
@@ -123,7 +122,7 @@ struct Material {
   TextureSlot heightMap;      // r = height; the normal is perturbed by its derivatives
   float bumpScale = 1.0f;     // normal map xy scale / height map amplitude
   UvProjection uvProjection = UvProjection::Mesh;  // where the UVs come from
-  glm::vec2 uvScale{1.0f};    // texture repeats per unit of UV (tiling)
+  glm::vec2 uvScale{1.0f};                         // texture repeats per unit of UV (tiling)
 };
 
 struct Object {
@@ -135,7 +134,7 @@ struct Object {
 
 struct Scene {
   std::string name;
-  std::string description;     // one line, from a scene file's "description"
+  std::string description;  // one line, from a scene file's "description"
   Camera camera;
   glm::vec3 ambient{1.0f};     // Ia
   glm::vec3 background{0.0f};  // linear clear colour
@@ -146,7 +145,7 @@ struct Scene {
   std::vector<Object> objects;
   std::vector<Texture> textures;  // referenced by Material texture slots
 
-  uint32_t addMesh(Mesh mesh);           // a custom mesh (kept as is when re-tessellating)
+  uint32_t addMesh(Mesh mesh);  // a custom mesh (kept as is when re-tessellating)
   uint32_t addShape(const ShapeDesc& shape);
   // Rebuilds every procedural mesh at `scale` times its base tessellation.
   void retessellate(float scale);
@@ -157,8 +156,8 @@ struct Scene {
 // in the binary. Each throws InputError for an unknown name, listing the
 // names that exist.
 Scene builtinScene(const std::string& name);
-std::vector<std::string> builtinSceneNames();  // sorted
-std::string_view builtinSceneJson(const std::string& name);  // the file's text
+std::vector<std::string> builtinSceneNames();                  // sorted
+std::string_view builtinSceneJson(const std::string& name);    // the file's text
 std::string builtinSceneDescription(const std::string& name);  // its one line
 // The `highlight` scene with its plane cut into quadsPerSide^2 quads.
 Scene highlightScene(uint32_t quadsPerSide);

@@ -200,8 +200,7 @@ Camera parseCamera(const Field& field) {
   if (auto f = field.optional("at")) camera.at = f->vec3();
   if (auto f = field.optional("up")) camera.up = f->vec3();
   if (auto f = field.optional("projection"))
-    camera.projection =
-        f->choose("projection", kProjectionNames);
+    camera.projection = f->choose("projection", kProjectionNames);
   if (auto f = field.optional("fovy")) {
     camera.fovyDegrees = f->number();
     if (!(camera.fovyDegrees > 0.0f && camera.fovyDegrees < 180.0f))
@@ -229,8 +228,7 @@ glm::vec3 parseAttenuation(const Field& field) {
 
 Light parseLight(const Field& field) {
   Light light;
-  if (auto f = field.optional("type"))
-    light.type = f->choose("light type", kLightTypeNames);
+  if (auto f = field.optional("type")) light.type = f->choose("light type", kLightTypeNames);
   if (light.type == LightType::Point) {
     field.expectObject({"type", "position", "intensity", "attenuation"});
     light.position = field.required("position", "the point light's position [x, y, z]").vec3();
@@ -265,7 +263,8 @@ float unitInterval(const Field& field) {
 
 // `owner` names the material in texture messages ("material 'brick'").
 Material parseMaterial(const Field& field, const std::string& owner, TextureLibrary& textures) {
-  Names allowed = {"ka", "kd", "ks", "shininess", "reflectivity", "transparency", "ior", "emissive"};
+  Names allowed = {"ka",           "kd",           "ks",  "shininess",
+                   "reflectivity", "transparency", "ior", "emissive"};
   allowed.insert(allowed.end(), TextureLibrary::fieldNames().begin(),
                  TextureLibrary::fieldNames().end());
   field.expectObject(allowed);
@@ -375,8 +374,7 @@ ShapeDesc parseShape(const Field& object, const ShapeSpec& spec) {
 // exact where Rodrigues' formula for [1, 0, 0] may round c + (1 - c) below 1.
 glm::mat4 parseRotation(const Field& field) {
   field.expectObject({"axis", "degrees", "about"});
-  Field axisField =
-      field.required("axis", "the rotation axis [x, y, z] or \"x\", \"y\", \"z\"");
+  Field axisField = field.required("axis", "the rotation axis [x, y, z] or \"x\", \"y\", \"z\"");
   float angle = glm::radians(field.required("degrees", "the angle in degrees").number());
   glm::mat4 rotation;
   if (axisField.json().is_string()) {
@@ -384,8 +382,7 @@ glm::mat4 parseRotation(const Field& field) {
     rotation = index == 0 ? rotationX(angle) : index == 1 ? rotationY(angle) : rotationZ(angle);
   } else {
     glm::vec3 axis = axisField.vec3();
-    if (glm::length(axis) == 0.0f)
-      axisField.fail("zero-length rotation axis", "a non-zero vector");
+    if (glm::length(axis) == 0.0f) axisField.fail("zero-length rotation axis", "a non-zero vector");
     rotation = rotationAxis(axis, angle);
   }
   if (auto about = field.optional("about")) {
@@ -490,7 +487,8 @@ class ObjectBuilder {
       addGltf(*gltf, world);
     } else if (spec) {
       ShapeDesc shape = parseShape(field, *spec);
-      Material surface = material(field, name);  // checked before the (possibly large) mesh is built
+      Material surface =
+          material(field, name);  // checked before the (possibly large) mesh is built
       scene_.objects.push_back({name, mesh(shape), world, surface});
     }
 
@@ -610,7 +608,8 @@ Scene parseSceneJson(std::string_view text, const std::string& sourceName) {
   TextureLibrary textures(scene, std::filesystem::path(sourceName).parent_path());
   MaterialTable materials;
   if (auto f = root.optional("materials")) materials = parseMaterials(*f, textures);
-  ObjectBuilder builder(scene, materials, textures, std::filesystem::path(sourceName).parent_path());
+  ObjectBuilder builder(scene, materials, textures,
+                        std::filesystem::path(sourceName).parent_path());
   Field objects = root.required("objects", "an array of objects (it may be empty)");
   for (const Field& object : objects.elements("an array of objects"))
     builder.add(object, glm::mat4(1.0f), 0);

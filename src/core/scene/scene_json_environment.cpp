@@ -77,8 +77,7 @@ Environment parseEnvironment(const Field& field, const std::filesystem::path& fo
   if (!field.json().is_object()) field.wrongType("an object with a \"type\"");
   Environment environment;
   Field type = field.required("type", "one of none, sky, equirect, cube");
-  environment.kind =
-      type.choose("environment type", kEnvironmentKindNames);
+  environment.kind = type.choose("environment type", kEnvironmentKindNames);
   switch (environment.kind) {
     case EnvironmentKind::None:
       field.expectObject({"type"});

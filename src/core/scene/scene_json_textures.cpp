@@ -85,8 +85,8 @@ int32_t TextureLibrary::proceduralTexture(const Field& field, std::string_view s
   if (slot == kNormal) allowed.push_back("depth");
   field.expectObject(allowed);
   ProceduralTexture desc;
-  desc.pattern = field.required("procedural", "a generator name")
-                    .choose("generator", kHeightPatternNames);
+  desc.pattern =
+      field.required("procedural", "a generator name").choose("generator", kHeightPatternNames);
   if (auto f = field.optional("size")) desc.size = f->integer(1, 4096, "texels per side");
   if (auto f = field.optional("repeats")) desc.repeats = f->integer(1, 4096, "cells per side");
   glm::vec3 low{0.0f}, high{1.0f};

@@ -54,13 +54,20 @@ Mesh buildShape(const ShapeDesc& shape, float scale) {
 
 const char* shapeKindName(ShapeKind kind) {
   switch (kind) {
-    case ShapeKind::Plane: return "plane";
-    case ShapeKind::Box: return "box";
-    case ShapeKind::UvSphere: return "sphere";
-    case ShapeKind::Icosphere: return "icosphere";
-    case ShapeKind::Torus: return "torus";
-    case ShapeKind::Teapot: return "teapot";
-    case ShapeKind::Custom: return "mesh";
+    case ShapeKind::Plane:
+      return "plane";
+    case ShapeKind::Box:
+      return "box";
+    case ShapeKind::UvSphere:
+      return "sphere";
+    case ShapeKind::Icosphere:
+      return "icosphere";
+    case ShapeKind::Torus:
+      return "torus";
+    case ShapeKind::Teapot:
+      return "teapot";
+    case ShapeKind::Custom:
+      return "mesh";
   }
   return "?";
 }

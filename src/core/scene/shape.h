@@ -2,7 +2,6 @@
 // Procedural shapes as descriptions, so a scene can be rebuilt at another
 // tessellation (the comparison reference uses 4x; `--tess` later).
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "core/scene/mesh.h"
@@ -13,11 +12,11 @@ enum class ShapeKind { Plane, Box, UvSphere, Icosphere, Torus, Teapot, Custom };
 
 struct ShapeDesc {
   ShapeKind kind = ShapeKind::Custom;
-  float size = 1.0f;              // plane: side length
-  glm::vec3 halfExtents{0.5f};    // box
-  float radius = 1.0f;            // uv sphere, icosphere
-  float majorRadius = 1.0f;       // torus
-  float minorRadius = 0.25f;      // torus
+  float size = 1.0f;            // plane: side length
+  glm::vec3 halfExtents{0.5f};  // box
+  float radius = 1.0f;          // uv sphere, icosphere
+  float majorRadius = 1.0f;     // torus
+  float minorRadius = 0.25f;    // torus
   // Base tessellation: plane quads per side, sphere slices (stacks = slices / 2),
   // icosphere subdivision level, torus major segments (minor = major / 2),
   // teapot quads per patch side. Boxes are exact and ignore it.

@@ -26,7 +26,7 @@ glm::mat4 scaling(glm::vec3 factors);
 
 // Shear: x' = x + xy*y + xz*z, y' = y + yx*x + yz*z, z' = z + zx*x + zy*y
 struct Shear {
-    float xy = 0, xz = 0, yx = 0, yz = 0, zx = 0, zy = 0;
+  float xy = 0, xz = 0, yx = 0, yz = 0, zx = 0, zy = 0;
 };
 glm::mat4 shearing(const Shear& s);
 
@@ -65,7 +65,7 @@ glm::mat4 orthographicReversedZ(float left, float right, float bottom, float top
 
 // Viewport mapping, Vulkan spec 'Coordinate Transformations': NDC -> framebuffer coordinates.
 struct Viewport {
-    float x = 0, y = 0, width = 1, height = 1, minDepth = 0, maxDepth = 1;
+  float x = 0, y = 0, width = 1, height = 1, minDepth = 0, maxDepth = 1;
 };
 // xf = x + w/2 (xd + 1), yf = y + h/2 (yd + 1), zf = minDepth + zd (maxDepth - minDepth)
 glm::vec3 viewportTransform(glm::vec3 ndc, const Viewport& vp);

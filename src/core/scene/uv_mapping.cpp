@@ -57,5 +57,4 @@ void applyUvProjection(Mesh& mesh, UvProjection projection) {
   computeTangents(mesh);
 }
 
-
 }  // namespace shadelab

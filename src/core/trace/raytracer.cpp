@@ -11,9 +11,9 @@
 
 #include "core/base/errors.h"
 #include "core/scene/lighting.h"
+#include "core/scene/uv_mapping.h"
 #include "core/trace/trace_material.h"
 #include "core/trace/trace_shapes.h"
-#include "core/scene/uv_mapping.h"
 #include "interface.h"
 
 namespace shadelab {

@@ -21,10 +21,10 @@
 #include <string>
 #include <vector>
 
-#include "core/trace/bvh.h"
 #include "core/base/image.h"
-#include "core/trace/ray.h"
 #include "core/scene/scene.h"
+#include "core/trace/bvh.h"
+#include "core/trace/ray.h"
 #include "core/trace/trace_textures.h"
 
 namespace shadelab {

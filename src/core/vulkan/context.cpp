@@ -67,7 +67,9 @@ Context::Context(const ContextOptions& options) : echoValidation_(options.echoVa
   }
 }
 
-Context::~Context() { destroy(); }
+Context::~Context() {
+  destroy();
+}
 
 void Context::destroy() {
   if (device_) {
@@ -93,8 +95,9 @@ void Context::createInstance(const ContextOptions& options) {
   std::vector<const char*> extensions = options.instanceExtensions;
   if (options.validation) {
     if (!layerAvailable(kValidationLayer))
-      throw VulkanError("validation requested but VK_LAYER_KHRONOS_validation is not installed "
-                        "(Debian package vulkan-validationlayers)");
+      throw VulkanError(
+          "validation requested but VK_LAYER_KHRONOS_validation is not installed "
+          "(Debian package vulkan-validationlayers)");
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }
@@ -165,7 +168,8 @@ void Context::createDevice(const ContextOptions& options) {
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
 
-  VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceVulkan13Features features13{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   features13.dynamicRendering = VK_TRUE;
   features13.synchronization2 = VK_TRUE;
   // glslang's SPIR-V 1.6 compute shaders declare their group size with LocalSizeId.
@@ -192,7 +196,9 @@ void Context::createDevice(const ContextOptions& options) {
   VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &uploadPool_));
 }
 
-DeviceDescription Context::description() const { return describe(physicalDevice_); }
+DeviceDescription Context::description() const {
+  return describe(physicalDevice_);
+}
 
 std::vector<DeviceDescription> Context::listDevices() {
   VkInstance instance = createBareInstance({}, {}, nullptr);
@@ -257,6 +263,8 @@ void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) 
   vkFreeCommandBuffers(device_, uploadPool_, 1, &cmd);
 }
 
-void Context::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+void Context::waitIdle() const {
+  VK_CHECK(vkDeviceWaitIdle(device_));
+}
 
 }  // namespace shadelab

@@ -22,9 +22,11 @@ inline constexpr NameTable<DepthMode, 4> kDepthModeNames = {{
 
 VkFormat depthFormat(DepthMode mode);  // D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D32_SFLOAT
 bool isReversedZ(DepthMode mode);
-float depthClearValue(DepthMode mode);             // the far plane: 1, or 0 reversed
-VkCompareOp depthCompareOp(DepthMode mode);        // LESS, or GREATER_OR_EQUAL reversed
-inline std::string_view depthModeName(DepthMode mode) { return nameOf(kDepthModeNames, mode); }
+float depthClearValue(DepthMode mode);       // the far plane: 1, or 0 reversed
+VkCompareOp depthCompareOp(DepthMode mode);  // LESS, or GREATER_OR_EQUAL reversed
+inline std::string_view depthModeName(DepthMode mode) {
+  return nameOf(kDepthModeNames, mode);
+}
 std::string_view depthFormatName(DepthMode mode);  // "D16_UNORM", ...
 
 }  // namespace shadelab

@@ -1,10 +1,10 @@
 #include "core/vulkan/gpu_scene.h"
 
+#include <meshoptimizer.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <map>
-
-#include <meshoptimizer.h>
 
 #include "core/scene/frustum.h"
 #include "core/scene/lighting.h"
@@ -47,9 +47,8 @@ std::vector<uint32_t> deviceTriangleOrder(const Mesh& mesh) {
   if (mesh.indices.empty()) return order;
   meshopt_optimizeVertexCache(order.data(), mesh.indices.data(), mesh.indices.size(),
                               mesh.vertices.size());
-  meshopt_optimizeOverdraw(order.data(), order.data(), order.size(),
-                           &mesh.vertices[0].position.x, mesh.vertices.size(), sizeof(Vertex),
-                           1.05f);
+  meshopt_optimizeOverdraw(order.data(), order.data(), order.size(), &mesh.vertices[0].position.x,
+                           mesh.vertices.size(), sizeof(Vertex), 1.05f);
   return order;
 }
 
@@ -66,8 +65,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
   auto append = [&](const Mesh& mesh) {
-    DrawItem range{uint32_t(indices.size()), uint32_t(mesh.indices.size()),
-                   int32_t(vertices.size()), {}};
+    DrawItem range{
+        uint32_t(indices.size()), uint32_t(mesh.indices.size()), int32_t(vertices.size()), {}};
     vertices.insert(vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
     std::vector<uint32_t> order = deviceTriangleOrder(mesh);
     indices.insert(indices.end(), order.begin(), order.end());
@@ -97,10 +96,10 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
   }
   GpuScene gpuScene;
   gpuScene.lights = lightLayoutOf(scene);
-  gpuScene.vertices = uploadBuffer(context, std::as_bytes(std::span(vertices)),
-                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  gpuScene.indices = uploadBuffer(context, std::as_bytes(std::span(indices)),
-                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  gpuScene.vertices =
+      uploadBuffer(context, std::as_bytes(std::span(vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  gpuScene.indices =
+      uploadBuffer(context, std::as_bytes(std::span(indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     const Material& material = object.material;
@@ -188,7 +187,7 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
 }
 
 std::vector<gpu::ObjectData> makeObjectData(const Scene& scene, const glm::mat4& view,
-                                           NormalTransform normals) {
+                                            NormalTransform normals) {
   std::vector<gpu::ObjectData> objects;
   objects.reserve(scene.objects.size());
   for (const Object& object : scene.objects) {

@@ -5,8 +5,8 @@
 #include <compare>
 #include <vector>
 
-#include "core/vulkan/resources.h"
 #include "core/scene/scene.h"
+#include "core/vulkan/resources.h"
 #include "interface.h"
 
 namespace shadelab {
@@ -21,8 +21,8 @@ struct DrawItem {
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
   gpu::DrawConstants constants{};  // material and object index, pushed per draw
-  bool textured = false;  // the material has a texture: drawn by the textured pipelines
-  uint32_t material = 0;  // textured: which material's set 1 it binds (passes/scene_textures)
+  bool textured = false;           // the material has a texture: drawn by the textured pipelines
+  uint32_t material = 0;     // textured: which material's set 1 it binds (passes/scene_textures)
   Bounds worldBounds;        // the mesh's box, transformed: what culling tests
   bool transparent = false;  // blended after the opaque draws, back to front
 };
@@ -65,7 +65,8 @@ std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
 
 // Lights move to eye space, so the shaders light with V = -position; the
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.
-gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view, const glm::mat4& projection);
+gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
+                             const glm::mat4& projection);
 // Model-view and its normal matrix (inverse transpose) per object.
 // Materials travel with the draws (DrawItem::constants).
 std::vector<gpu::ObjectData> makeObjectData(

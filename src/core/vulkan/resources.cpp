@@ -36,7 +36,9 @@ void DeviceMemory::reset() {
   size_ = 0;
 }
 
-uint64_t deviceMemoryInUse() { return memoryInUse.load(); }
+uint64_t deviceMemoryInUse() {
+  return memoryInUse.load();
+}
 
 Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage,
                MemoryUse memory)
@@ -52,10 +54,10 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
 
   VkMemoryRequirements requirements;
   vkGetBufferMemoryRequirements(device, buffer, &requirements);
-  VkMemoryPropertyFlags flags = memory == MemoryUse::HostVisible
-                                    ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                          VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  VkMemoryPropertyFlags flags =
+      memory == MemoryUse::HostVisible
+          ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+          : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = requirements.size;
   alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits, flags);
