@@ -247,9 +247,8 @@ static gpu::DrawConstants frameConstants(const DrawItem& draw, const ForwardFram
   return constants;
 }
 
-void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardFrame& frame,
-                         const GpuScene& scene, std::span<const DrawItem> draws,
-                         const VkViewport& viewport) const {
+void ForwardPass::bindFrame(VkCommandBuffer cmd, const ForwardFrame& frame, const GpuScene& scene,
+                            const VkViewport& viewport) const {
   VkDescriptorSet frameSet = frame.frameSet;
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
@@ -261,6 +260,12 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardF
   VkBuffer vertexBuffer = scene.vertices.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+}
+
+void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardFrame& frame,
+                         const GpuScene& scene, std::span<const DrawItem> draws,
+                         const VkViewport& viewport) const {
+  bindFrame(cmd, frame, scene, viewport);
   std::optional<std::pair<bool, bool>> bound;  // (textured, blended) of the bound pipeline
   VkDescriptorSet materialSet = VK_NULL_HANDLE;
   for (const DrawItem& draw : draws) {
@@ -296,24 +301,14 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardF
 void ForwardPass::recordWireframe(VkCommandBuffer cmd, const ForwardFrame& frame,
                                   const GpuScene& scene, std::span<const DrawItem> draws,
                                   const VkViewport& viewport) const {
-  VkDescriptorSet frameSet = frame.frameSet;
   if (!context_.features().fillModeNonSolid) return;
-  VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
-                   {uint32_t(viewport.width), uint32_t(viewport.height)}};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
   auto pipeline = pipelines_.find({.model = ShadingModel::Unlit,
                                    .lights = scene.lights,
                                    .target = frame.target,
                                    .wireframe = true});
   assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these lights");
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
-                          nullptr);
-  VkDeviceSize offset = 0;
-  VkBuffer vertexBuffer = scene.vertices.get();
-  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
-  vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+  bindFrame(cmd, frame, scene, viewport);
   for (const DrawItem& draw : draws) {
     // Unlit writes kd: every edge in one light grey, textured or not.
     gpu::DrawConstants constants = frameConstants(draw, frame);

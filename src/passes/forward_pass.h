@@ -86,6 +86,9 @@ class ForwardPass {
 
  private:
   Pipeline createPipeline(const ForwardVariant& key) const;
+  // The viewport and scissor, set 0 and the scene's vertex and index buffers.
+  void bindFrame(VkCommandBuffer cmd, const ForwardFrame& frame, const GpuScene& scene,
+                 const VkViewport& viewport) const;
 
   const Context& context_;
   VkFormat colorFormat_;

@@ -26,12 +26,11 @@
 namespace shadelab {
 
 enum class EnvironmentKind { None, Sky, Panorama, CubeFaces };
-inline constexpr NameTable<EnvironmentKind, 4> kEnvironmentKindNames = {{
-    {EnvironmentKind::None, "none"},
-    {EnvironmentKind::Sky, "sky"},
-    {EnvironmentKind::Panorama, "equirect"},
-    {EnvironmentKind::CubeFaces, "cube"},
-}};
+inline constexpr NameTable<EnvironmentKind, 4> kEnvironmentKindNames = {
+    {{EnvironmentKind::None, "none"},
+     {EnvironmentKind::Sky, "sky"},
+     {EnvironmentKind::Panorama, "equirect"},
+     {EnvironmentKind::CubeFaces, "cube"}}};
 
 // Sky = a gradient zenith -> horizon -> ground, sqrt-shaped in the elevation,
 // plus a sun disc with a soft edge (its outer half).

@@ -16,12 +16,11 @@ enum class HeightPattern {
   Dimples,  // 1 on the flat, a smooth cosine dip to 0 at each cell's centre
   Waves,    // 0.5 + 0.25 (sin 2 pi u + sin 2 pi v): ripples along both axes
 };
-inline constexpr NameTable<HeightPattern, 4> kHeightPatternNames = {{
-    {HeightPattern::Checker, "checker"},
-    {HeightPattern::Bricks, "bricks"},
-    {HeightPattern::Dimples, "dimples"},
-    {HeightPattern::Waves, "waves"},
-}};
+inline constexpr NameTable<HeightPattern, 4> kHeightPatternNames = {
+    {{HeightPattern::Checker, "checker"},
+     {HeightPattern::Bricks, "bricks"},
+     {HeightPattern::Dimples, "dimples"},
+     {HeightPattern::Waves, "waves"}}};
 
 struct ProceduralTexture {
   HeightPattern pattern = HeightPattern::Checker;

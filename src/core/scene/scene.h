@@ -15,11 +15,10 @@
 namespace shadelab {
 
 enum class Projection { Perspective, Frustum, Orthographic };
-inline constexpr NameTable<Projection, 3> kProjectionNames = {{
-    {Projection::Perspective, "perspective"},
-    {Projection::Frustum, "frustum"},
-    {Projection::Orthographic, "orthographic"},
-}};
+inline constexpr NameTable<Projection, 3> kProjectionNames = {
+    {{Projection::Perspective, "perspective"},
+     {Projection::Frustum, "frustum"},
+     {Projection::Orthographic, "orthographic"}}};
 
 struct Camera {
   glm::vec3 eye{0.0f, 2.0f, 6.0f};
@@ -39,10 +38,8 @@ struct Camera {
 };
 
 enum class LightType { Point, Directional };
-inline constexpr NameTable<LightType, 2> kLightTypeNames = {{
-    {LightType::Point, "point"},
-    {LightType::Directional, "directional"},
-}};
+inline constexpr NameTable<LightType, 2> kLightTypeNames = {
+    {{LightType::Point, "point"}, {LightType::Directional, "directional"}}};
 
 struct Light {
   LightType type = LightType::Point;
@@ -54,19 +51,17 @@ struct Light {
 
 // Texture sampling, per texture slot of a material (glTF samplers map here).
 enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
-inline constexpr NameTable<TextureWrap, 3> kTextureWrapNames = {{
-    {TextureWrap::Repeat, "repeat"},
-    {TextureWrap::ClampToEdge, "clamp_to_edge"},
-    {TextureWrap::MirroredRepeat, "mirrored_repeat"},
-}};
+inline constexpr NameTable<TextureWrap, 3> kTextureWrapNames = {
+    {{TextureWrap::Repeat, "repeat"},
+     {TextureWrap::ClampToEdge, "clamp_to_edge"},
+     {TextureWrap::MirroredRepeat, "mirrored_repeat"}}};
 // The --filter and JSON "filter" names.
 enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
-inline constexpr NameTable<TextureFilter, 4> kTextureFilterNames = {{
-    {TextureFilter::Nearest, "nearest"},
-    {TextureFilter::Bilinear, "bilinear"},
-    {TextureFilter::Trilinear, "trilinear"},
-    {TextureFilter::Anisotropic, "aniso"},
-}};
+inline constexpr NameTable<TextureFilter, 4> kTextureFilterNames = {
+    {{TextureFilter::Nearest, "nearest"},
+     {TextureFilter::Bilinear, "bilinear"},
+     {TextureFilter::Trilinear, "trilinear"},
+     {TextureFilter::Anisotropic, "aniso"}}};
 struct SamplerDesc {
   TextureWrap wrapU = TextureWrap::Repeat;
   TextureWrap wrapV = TextureWrap::Repeat;
@@ -90,13 +85,12 @@ struct Texture {
 // Texture coordinates generated for a material instead of the mesh's own
 // (an S-mapping, for meshes without UVs): see core/scene/uv_mapping.h.
 enum class UvProjection { Mesh, Planar, Cylindrical, Spherical, Box };
-inline constexpr NameTable<UvProjection, 5> kUvProjectionNames = {{
-    {UvProjection::Mesh, "mesh"},
-    {UvProjection::Planar, "planar"},
-    {UvProjection::Cylindrical, "cylindrical"},
-    {UvProjection::Spherical, "spherical"},
-    {UvProjection::Box, "box"},
-}};
+inline constexpr NameTable<UvProjection, 5> kUvProjectionNames = {
+    {{UvProjection::Mesh, "mesh"},
+     {UvProjection::Planar, "planar"},
+     {UvProjection::Cylindrical, "cylindrical"},
+     {UvProjection::Spherical, "spherical"},
+     {UvProjection::Box, "box"}}};
 
 // A material's use of one texture: an index into Scene::textures (-1: none).
 struct TextureSlot {

@@ -14,13 +14,12 @@ enum class ShadingModel : int {
   BlinnPhong = SHADING_BLINN_PHONG,
   Unlit = SHADING_UNLIT,
 };
-inline constexpr NameTable<ShadingModel, 5> kShadingModelNames = {{
-    {ShadingModel::Flat, "flat"},
-    {ShadingModel::Gouraud, "gouraud"},
-    {ShadingModel::Phong, "phong"},
-    {ShadingModel::BlinnPhong, "blinn-phong"},
-    {ShadingModel::Unlit, "unlit"},
-}};
+inline constexpr NameTable<ShadingModel, 5> kShadingModelNames = {
+    {{ShadingModel::Flat, "flat"},
+     {ShadingModel::Gouraud, "gouraud"},
+     {ShadingModel::Phong, "phong"},
+     {ShadingModel::BlinnPhong, "blinn-phong"},
+     {ShadingModel::Unlit, "unlit"}}};
 constexpr int kShadingModelCount = int(kShadingModelNames.size());
 
 inline std::string_view shadingModelName(ShadingModel model) {

@@ -13,12 +13,10 @@
 namespace shadelab {
 
 enum class DepthMode { D16, D24, D32F, ReversedZ };
-inline constexpr NameTable<DepthMode, 4> kDepthModeNames = {{
-    {DepthMode::D16, "d16"},
-    {DepthMode::D24, "d24"},
-    {DepthMode::D32F, "d32f"},
-    {DepthMode::ReversedZ, "reversed"},
-}};
+inline constexpr NameTable<DepthMode, 4> kDepthModeNames = {{{DepthMode::D16, "d16"},
+                                                             {DepthMode::D24, "d24"},
+                                                             {DepthMode::D32F, "d32f"},
+                                                             {DepthMode::ReversedZ, "reversed"}}};
 
 VkFormat depthFormat(DepthMode mode);  // D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, D32_SFLOAT
 bool isReversedZ(DepthMode mode);
