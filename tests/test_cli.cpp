@@ -407,6 +407,8 @@ TEST_F(Cli, BrokenGltfFilesAreInputErrors) {
       {"truncated.glb", "invalid GLB: truncated"},
       {"syntax_error.gltf", "parse error at line 73"},
       {"accessor_past_buffer.gltf", "past the end of its bufferView"},
+      {"accessor_count_overflow.gltf", "more than 2^64 bytes"},
+      {"bufferview_offset_overflow.gltf", "runs past the end of its buffer"},
       {"missing_buffer.gltf", "does_not_exist.bin"},
       {"missing_image.gltf", "no_such_image.png"},
       {"required_extension.gltf", "KHR_draco_mesh_compression"},

@@ -237,6 +237,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "invalid GLB: truncated, the header gives 788 bytes but the file has 394"},
         BadFile{"syntax_error.gltf", "parse error at line 73"},
         BadFile{"accessor_past_buffer.gltf", "POSITION (accessors[0]): 300 elements"},
+        // Sizes whose arithmetic wraps 64 bits once passed the bounds checks
+        // and read outside the buffer (ASan: heap-buffer-overflow).
+        BadFile{"accessor_count_overflow.gltf",
+                "6148914691236517206 elements from byte 0 need more than 2^64 bytes"},
+        BadFile{"accessor_offset_overflow.gltf",
+                "elements from byte 18446744073709551608 need more than 2^64 bytes"},
+        BadFile{"bufferview_offset_overflow.gltf",
+                "bufferViews[0] (byteOffset 18446744073709551615, byteLength 36) runs past the "
+                "end of its buffer (78 bytes)"},
         BadFile{"missing_buffer.gltf", "does_not_exist.bin"},
         BadFile{"missing_image.gltf", "images[0] 'no_such_image.png'"},
         BadFile{"required_extension.gltf", "\"KHR_draco_mesh_compression\" is not supported"},

@@ -189,6 +189,13 @@ def bad():
         b.doc["scenes"] = [{"nodes": [0]}]
         return b
     b = tri(); b.doc["accessors"][0]["count"] = 300; b.finish("bad/accessor_past_buffer.gltf")
+    # Sizes whose products and sums wrap 64 bits.
+    b = tri(); b.doc["accessors"][0]["count"] = 6148914691236517206
+    b.finish("bad/accessor_count_overflow.gltf")
+    b = tri(); b.doc["accessors"][0]["byteOffset"] = 2**64 - 8
+    b.finish("bad/accessor_offset_overflow.gltf")
+    b = tri(); b.doc["bufferViews"][0]["byteOffset"] = 2**64 - 1
+    b.finish("bad/bufferview_offset_overflow.gltf")
     b = tri(); b.finish("bad/missing_buffer.gltf", external="does_not_exist.bin")
     os.remove(os.path.join(HERE, "does_not_exist.bin"))  # written beside data/, absent from bad/
     b = tri(); b.doc["extensionsUsed"] = b.doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]

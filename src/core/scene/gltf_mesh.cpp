@@ -84,17 +84,28 @@ class PrimitiveReader {
     if (stride < elementSize)
       fail(name + ": byteStride " + std::to_string(stride) + " is smaller than an element (" +
            std::to_string(elementSize) + " bytes)");
-    if (uint64_t(bufferView.byteOffset) + bufferView.byteLength > buffer.data.size())
-      fail(name + ": bufferViews[" + std::to_string(accessor.bufferView) + "] (bytes " +
-           std::to_string(bufferView.byteOffset) + ".." +
-           std::to_string(uint64_t(bufferView.byteOffset) + bufferView.byteLength) +
-           ") runs past the end of its buffer (" + std::to_string(buffer.data.size()) + " bytes)");
-    uint64_t end = accessor.count == 0 ? 0
-                                       : uint64_t(accessor.byteOffset) +
-                                             stride * (uint64_t(accessor.count) - 1) + elementSize;
-    if (end > bufferView.byteLength)
+    // Offsets, counts and lengths are the file's: every sum and product is
+    // checked for overflow before it is compared with the buffer's size.
+    uint64_t viewEnd = 0;
+    if (__builtin_add_overflow(uint64_t(bufferView.byteOffset), uint64_t(bufferView.byteLength),
+                               &viewEnd) ||
+        viewEnd > buffer.data.size())
+      fail(name + ": bufferViews[" + std::to_string(accessor.bufferView) + "] (byteOffset " +
+           std::to_string(bufferView.byteOffset) + ", byteLength " +
+           std::to_string(bufferView.byteLength) + ") runs past the end of its buffer (" +
+           std::to_string(buffer.data.size()) + " bytes)");
+    uint64_t end = 0;  // one past the accessor's last byte, from the view's start
+    bool overflow = false;
+    if (accessor.count > 0) {
+      uint64_t span = 0;
+      overflow = __builtin_mul_overflow(stride, uint64_t(accessor.count) - 1, &span) ||
+                 __builtin_add_overflow(span, elementSize, &span) ||
+                 __builtin_add_overflow(span, uint64_t(accessor.byteOffset), &end);
+    }
+    if (overflow || end > bufferView.byteLength)
       fail(name + ": " + std::to_string(accessor.count) + " elements from byte " +
-           std::to_string(accessor.byteOffset) + " need " + std::to_string(end) +
+           std::to_string(accessor.byteOffset) + " need " +
+           (overflow ? std::string("more than 2^64") : std::to_string(end)) +
            " bytes, past the end of its bufferView (" + std::to_string(bufferView.byteLength) +
            " bytes)");
     return ElementView{buffer.data.data() + bufferView.byteOffset + accessor.byteOffset,
