@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/json_nesting.h"
 #include "core/scene/frustum.h"
 #include "core/scene/gltf_detail.h"
 #include "core/scene/transform.h"
@@ -60,17 +61,31 @@ std::string trimmed(std::string text) {
   return text;
 }
 
-// tinygltf says only "Invalid glTF binary" for a short file; say what is short.
-void checkGlbLength(std::span<const uint8_t> bytes, const std::string& source) {
+// tinygltf says only "Invalid glTF binary" for a short file and accepts any
+// version: say what is wrong. Also limits the JSON chunk's nesting.
+void checkGlbHeader(std::span<const uint8_t> bytes, const std::string& source) {
   if (bytes.size() < 12)
     throw InputError(source + ": invalid GLB: truncated, " + std::to_string(bytes.size()) +
                      " bytes, less than the 12-byte header");
-  uint32_t length = 0;
-  std::memcpy(&length, bytes.data() + 8, 4);  // little-endian, as on every host we build for
+  // Little-endian, as on every host we build for.
+  uint32_t version = 0, length = 0;
+  std::memcpy(&version, bytes.data() + 4, 4);
+  std::memcpy(&length, bytes.data() + 8, 4);
+  if (version != 2)
+    throw InputError(source + ": invalid GLB: version " + std::to_string(version) +
+                     " in the header, expected 2 (glTF 2.0)");
   if (length > bytes.size())
     throw InputError(source + ": invalid GLB: truncated, the header gives " +
                      std::to_string(length) + " bytes but the file has " +
                      std::to_string(bytes.size()));
+  uint32_t chunkLength = 0;
+  if (bytes.size() >= 20) {
+    std::memcpy(&chunkLength, bytes.data() + 12, 4);
+    size_t available = bytes.size() - 20;
+    checkJsonNesting(std::string_view(reinterpret_cast<const char*>(bytes.data()) + 20,
+                                      std::min<size_t>(chunkLength, available)),
+                     source);
+  }
 }
 
 tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& source,
@@ -83,7 +98,11 @@ tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& so
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (bytes.size() > std::numeric_limits<unsigned int>::max())
     throw InputError(source + ": file too large");
-  if (binary) checkGlbLength(bytes, source);
+  if (binary)
+    checkGlbHeader(bytes, source);
+  else
+    checkJsonNesting(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                     source);
   bool ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
                                                  unsigned(bytes.size()), baseDir)
                    : loader.LoadASCIIFromString(&model, &error, &warning,

@@ -147,6 +147,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/json_nesting.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/scene_json_environment.h"
 #include "core/scene/scene_json_fields.h"
@@ -579,6 +580,7 @@ size_t quotedLiteralByte(std::string_view text, const std::string& what) {
 }
 
 nlohmann::json parseDocument(std::string_view text, const std::string& source) {
+  checkJsonNesting(text, source);  // the parser recurses once per level
   try {
     return nlohmann::json::parse(text.begin(), text.end());
   } catch (const nlohmann::json::parse_error& error) {
