@@ -301,7 +301,10 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   stats.drawCalls = uint32_t(draws.size());
   stats.triangles = 0;
   for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
-  std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
+  // A scene without objects has no data (objects.data() may be null, which
+  // memcpy forbids even for zero bytes: UBSan reported it).
+  if (!objects.empty())
+    std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
   ForwardFrame forwardFrame{.target = target_.layout,
                             .frameSet = frame.set,
                             .environment = settings.environment && sceneEnvironment_,
