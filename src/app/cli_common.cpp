@@ -49,4 +49,23 @@ int finishWithValidation(const Context& context, int exitCode) {
   return exitCode == 0 ? 1 : exitCode;
 }
 
+OutputGroup::~OutputGroup() {
+  if (kept_) return;
+  std::error_code ignored;
+  for (const std::filesystem::path& path : written_) std::filesystem::remove(path, ignored);
+  if (madeFolder_) std::filesystem::remove(folder_, ignored);  // only if empty
+}
+
+void OutputGroup::add(const std::filesystem::path& path, const std::function<void()>& write) {
+  std::error_code error;
+  if (!folder_.empty() && !madeFolder_ && !std::filesystem::is_directory(folder_, error)) {
+    if (!std::filesystem::create_directory(folder_, error))
+      throw InputError("cannot create output folder '" + folder_.string() +
+                       "': " + error.message());
+    madeFolder_ = true;
+  }
+  write();
+  written_.push_back(path);
+}
+
 }  // namespace shadelab

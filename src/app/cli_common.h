@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the subcommands: option parsing that reports bad values
 // as InputError, and the Vulkan context every command opens the same way.
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,5 +37,26 @@ std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.
 int finishWithValidation(const Context& context, int exitCode);
+
+// A command's outputs as one: each file is atomic (writeFileAtomically), and
+// if a later one fails the earlier ones of this run are removed, with the
+// folder when this run made it. Nothing of a failed command stays on disk.
+class OutputGroup {
+ public:
+  // `folder`: made on the first write if it does not exist (empty: none).
+  explicit OutputGroup(std::filesystem::path folder = {}) : folder_(std::move(folder)) {}
+  OutputGroup(const OutputGroup&) = delete;
+  OutputGroup& operator=(const OutputGroup&) = delete;
+  ~OutputGroup();
+  // Runs `write` (which writes `path`) and remembers the file.
+  void add(const std::filesystem::path& path, const std::function<void()>& write);
+  void keep() { kept_ = true; }  // all written: leave them
+
+ private:
+  std::filesystem::path folder_;
+  bool madeFolder_ = false;
+  bool kept_ = false;
+  std::vector<std::filesystem::path> written_;
+};
 
 }  // namespace shadelab

@@ -43,8 +43,9 @@ struct BenchCommandOptions {
   bool sizeGiven = false;
 };
 
-// Creates DIR if needed (its parent must exist); throws InputError naming it.
-void prepareOutputFolder(const fs::path& folder) {
+// Throws InputError naming DIR unless it is a writable folder or can be made
+// in a writable parent. Called first, so bad paths fail fast.
+void checkOutputFolder(const fs::path& folder) {
   std::error_code error;
   if (fs::is_directory(folder, error)) {
     checkWritableFolder(folder / "results.csv");
@@ -53,8 +54,6 @@ void prepareOutputFolder(const fs::path& folder) {
   if (fs::exists(folder, error))
     throw InputError("output '" + folder.string() + "' exists and is not a folder");
   checkWritableFolder(folder);  // the parent
-  if (!fs::create_directory(folder, error))
-    throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
 // "material,nearest" -> {none, Nearest}; throws InputError naming a bad entry.
@@ -115,7 +114,7 @@ int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& globa
     throw InputError("--sweep depth: measures the built-in zfight scene, not '" + options.scene +
                      "'");
   Size size = parseSize(options.sizeGiven ? options.size : "640x360", "--size");
-  prepareOutputFolder(options.output);
+  checkOutputFolder(options.output);
   std::unique_ptr<Context> context = openContext(global);
   std::vector<ZFightMeasurement> results;
   {
@@ -126,10 +125,14 @@ int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& globa
         renderer, options.nearPlanes, size.width, size.height,
         [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
   }
+  // The folder is made only now, with the results: a killed or failed bench
+  // leaves no empty folder.
   fs::path csv = fs::path(options.output) / "zfight.csv";
   fs::path chart = fs::path(options.output) / "zfight.png";
-  writeTextFile(csv, zfightCsv(results, size.width, size.height));
-  writeImage(zfightChart(results), chart);
+  OutputGroup outputs(options.output);
+  outputs.add(csv, [&] { writeTextFile(csv, zfightCsv(results, size.width, size.height)); });
+  outputs.add(chart, [&] { writeImage(zfightChart(results), chart); });
+  outputs.keep();
 
   std::printf("pixels where the farther plane wins (%%), planes %g apart\n", kZFightGap);
   std::printf("%-13s %9s", "projection", "near");
@@ -167,8 +170,13 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   const ErrorMetric& charted = findErrorMetric(options.metric, "--metric");
   size_t chartedIndex = size_t(&charted - errorMetrics().data());
   Scene scene = loadScene(options.scene);
-  prepareOutputFolder(options.output);
+  checkOutputFolder(options.output);
   std::vector<BenchPoint> points = benchPoints(axes);
+  // The raster reference is 4x; the sweep's finest point may be finer.
+  float finest = 4.0f;
+  for (const BenchPoint& point : points) finest = std::max(finest, point.tessellation);
+  checkTriangleBudget(scene, finest, global.maxTriangles, "the sweep's finest tessellation",
+                      "--max-triangles");
 
   std::unique_ptr<Context> context = openContext(global);
   std::vector<BenchResult> results;
@@ -182,12 +190,19 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     });
   }
   fs::path folder(options.output);
-  writeTextFile(folder / "results.csv", benchCsv(results, bench, scene.name));
   std::string title = "Scene " + scene.name + " at " + options.size + ", against the " +
                       bench.reference.name + " reference";
-  writeImage(errorTimeChart(results, chartedIndex, charted, title), folder / "error_vs_time.png");
-  writeImage(errorTriangleChart(results, chartedIndex, charted, title),
-             folder / "error_vs_triangles.png");
+  OutputGroup outputs(folder);  // made only now: see runDepthSweep
+  outputs.add(folder / "results.csv",
+              [&] { writeTextFile(folder / "results.csv", benchCsv(results, bench, scene.name)); });
+  outputs.add(folder / "error_vs_time.png", [&] {
+    writeImage(errorTimeChart(results, chartedIndex, charted, title), folder / "error_vs_time.png");
+  });
+  outputs.add(folder / "error_vs_triangles.png", [&] {
+    writeImage(errorTriangleChart(results, chartedIndex, charted, title),
+               folder / "error_vs_triangles.png");
+  });
+  outputs.keep();
   printResults(results, charted, chartedIndex);
   std::printf(
       "device medians over %zu steady frames per setting; wrote %s/{results.csv, "

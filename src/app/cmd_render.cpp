@@ -140,12 +140,18 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   DepthMode depth = parseNamed(kDepthModeNames, options.depth, "--depth");
   bool environment = parseNamed(kOnOffNames, options.environment, "--env");
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
+  if (options.quality) checkMetricBound(metric, *options.quality, "--quality");
   const Reference& reference = findReference(options.reference, "--reference");
   TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
+  // Before building: --quality may sweep up to 4x (quality.cpp), the raster reference is 4x.
+  float largest = options.quality ? std::max(factor, 4.0f) : factor;
+  checkTriangleBudget(scene, largest, global.maxTriangles,
+                      options.quality ? "--quality" : "--tess " + options.tessellation,
+                      "--max-triangles");
   if (options.simplify > 0.0f) {
     SimplifyStats simplified = simplifyForView(scene, view, options.simplify);
     std::printf("simplified loaded meshes to %g px: %llu -> %llu triangles\n", options.simplify,

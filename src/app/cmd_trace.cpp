@@ -24,12 +24,13 @@ struct TraceOptions {
   std::string shadows = "on";
 };
 
-int runTrace(const TraceOptions& options) {
+int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   checkSamplesPerPixel(options.samplesPerPixel);
   bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  checkTriangleBudget(scene, 1.0f, global.maxTriangles, "trace", "--max-triangles");
   TraceSettings settings;
   settings.width = size.width;
   settings.height = size.height;
@@ -68,7 +69,7 @@ int runTrace(const TraceOptions& options) {
 
 }  // namespace
 
-CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
+CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions& global) {
   auto options = std::make_shared<TraceOptions>();
   CLI::App* command =
       app.add_subcommand("trace", "Ray trace a scene on the CPU (Whitted): the reference image");
@@ -97,7 +98,7 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
       ->add_option("--shadows", options->shadows,
                    namedHelp("Shadow rays (off: as the rasteriser)", kOnOffNames))
       ->capture_default_str();
-  return [options] { return runTrace(*options); };
+  return [options, &global] { return runTrace(*options, global); };
 }
 
 }  // namespace shadelab

@@ -41,6 +41,8 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene);
+  checkTriangleBudget(scene, options.tessellation, global.maxTriangles,
+                      "--tess " + std::to_string(options.tessellation), "--max-triangles");
 
   std::unique_ptr<Window> window;
   try {

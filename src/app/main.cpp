@@ -30,6 +30,11 @@ int main(int argc, char** argv) {
   app.add_flag("--validate,!--no-validate", global.validate,
                "Enable the Vulkan validation layer; any message makes the exit code non-zero");
   app.add_option("--device", global.device, "Use the Vulkan 1.3 device whose name contains NAME");
+  app.add_option("--max-triangles", global.maxTriangles,
+                 "Refuse a request estimated to draw more triangles than this (counted before "
+                 "anything is built)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
 
   std::map<std::string, CommandRunner> commands = {
       {"render", addRenderCommand(app, global)}, {"compare", addCompareCommand(app, global)},
