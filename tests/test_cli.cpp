@@ -375,6 +375,17 @@ TEST_F(Cli, BenchWritesOneCsvRowPerSetting) {
   EXPECT_NE(r.output.find("x floor"), std::string::npos) << r.output;
 }
 
+// A bench killed while it measures leaves nothing: its folder is made only
+// with the results. (--frames 2000 keeps it measuring well past the kill.)
+TEST_F(Cli, KilledBenchLeavesNoFolder) {
+  CommandResult r = run("bench -o " + out("b") +
+                        " --size 32x18 --frames 2000 --modes unlit --tess 1 --msaa 1 "
+                        "--reference raster & pid=$!; sleep 2; kill -TERM $pid; wait $pid");
+  EXPECT_EQ(r.exitCode, 128 + 15) << r.output;  // ended by SIGTERM, as the shell reports it
+  EXPECT_FALSE(fs::exists(out("b")));
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
 TEST_F(Cli, MissingTextureNamesTheFileAndTheMaterialAndWritesNothing) {
   std::ofstream(out("textured.json"))
       << R"({"materials": {"brick": {"diffuse_map": "maps/missing.png"}},

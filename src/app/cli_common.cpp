@@ -40,9 +40,9 @@ std::unique_ptr<Context> openContext(const GlobalOptions& global) {
   return std::make_unique<Context>(options);
 }
 
-int finishWithValidation(const Context& context, int exitCode) {
+int finishWithValidation(Context& context, int exitCode) {
   if (!context.validationEnabled()) return exitCode;
-  ValidationReport report = context.validationReport();
+  ValidationReport report = context.shutdown();
   if (report.total() == 0) return exitCode;
   std::fprintf(stderr, "shadelab: the validation layer reported %u error(s) and %u warning(s)\n",
                report.errors, report.warnings);

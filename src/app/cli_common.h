@@ -35,8 +35,10 @@ std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
 }
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
-// After a command: with validation on, any message turns success into exit 1.
-int finishWithValidation(const Context& context, int exitCode);
+// After a command, once every Vulkan object of it is destroyed: with
+// validation on, shuts the context down (its teardown messages count too)
+// and any message turns success into exit 1.
+int finishWithValidation(Context& context, int exitCode);
 
 // A command's outputs as one: each file is atomic (writeFileAtomically), and
 // if a later one fails the earlier ones of this run are removed, with the
