@@ -169,6 +169,12 @@ TEST_F(Cli, HelpSucceedsForEachCommand) {
   }
 }
 
+TEST_F(Cli, VersionPrintsTheProjectVersion) {
+  CommandResult r = run("--version");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output, "shadelab " SHADELAB_VERSION "\n");
+}
+
 std::string readText(const std::string& path) {
   std::ifstream file(path);
   return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
