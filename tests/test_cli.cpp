@@ -546,24 +546,46 @@ void expectDrawnChart(const std::string& path) {
   EXPECT_GT(colours.size(), 8u) << path;
 }
 
-TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
-  CommandResult r = run("bench zfight -o " + out("z") + " --size 160x90 --near 0.01,10");
+TEST_F(Cli, StudyZfightWritesTablesCsvsChartsAndImages) {
+  CommandResult r = run("study zfight -o " + out("z") + " --size 160x90");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  auto rows = csvRows(readText(out("z/zfight.csv")));
-  ASSERT_EQ(rows.size(), 1u + 2 * 4 * 2) << "header + projections x depth modes x near planes";
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"projection", "depth", "format", "near", "far",
-                                               "gap", "width", "height", "covered_pixels",
-                                               "wrong_pixels", "wrong_fraction"}));
-  EXPECT_EQ(rows[1][0], "perspective");
-  EXPECT_EQ(rows[1][1], "d16");
-  EXPECT_EQ(rows[1][2], "D16_UNORM");
-  EXPECT_EQ(rows[16][0], "orthographic");
-  EXPECT_EQ(rows[16][1], "reversed");
-  auto [width, height] = pngSize(out("z/zfight.png"));
-  EXPECT_GT(width, 1000u);
-  EXPECT_GT(height, 300u);
-  expectDrawnChart(out("z/zfight.png"));
+  for (const char* sweep : {"near", "distance"}) {
+    std::string csv = out("z/zfight_" + std::string(sweep) + ".csv");
+    auto rows = csvRows(readText(csv));
+    ASSERT_EQ(rows.size(), 1u + 2 * 4 * 5) << "header + projections x depth modes x 5 values";
+    EXPECT_EQ(rows[0], (std::vector<std::string>{
+                           "projection", "depth", "format", "near", "far", "distance", "gap",
+                           "width", "height", "covered_pixels", "wrong_pixels", "wrong_fraction"}));
+    EXPECT_EQ(rows[1][0], "perspective");
+    EXPECT_EQ(rows[1][1], "d16");
+    EXPECT_EQ(rows[1][2], "D16_UNORM");
+    EXPECT_EQ(rows[40][0], "orthographic");
+    EXPECT_EQ(rows[40][1], "reversed");
+    std::string chart = out("z/zfight_" + std::string(sweep) + ".png");
+    auto [width, height] = pngSize(chart);
+    EXPECT_GT(width, 1000u);
+    EXPECT_GT(height, 300u);
+    expectDrawnChart(chart);
+  }
+  EXPECT_EQ(pngSize(out("z/d16_perspective_distance29.png")), std::make_pair(160u, 90u));
   EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
+}
+
+TEST_F(Cli, StudyWithoutNameListsTheStudies) {
+  CommandResult r = run("study");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("zfight"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, StudyRefusesAnUnknownNameAndWritesNothing) {
+  CommandResult r = run("study nosuch -o " + out("s"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("study 'nosuch': expected one of zfight"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out("s")));
+  r = run("study zfight -o " + out("s") + " --size 0x9");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("--size '0x9'"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out("s")));
 }
 
 const std::vector<std::string> kBenchColumns = {"scene",         "width",

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the subcommands: option parsing that reports bad values
 // as InputError, and the Vulkan context every command opens the same way.
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ template <typename E, size_t N>
 std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
   return what + ": " + joinNames(namesOf(table));
 }
+
+// Creates the output folder DIR if needed (its parent must exist) and checks
+// that `firstFile` can be written in it; throws InputError naming it.
+void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.

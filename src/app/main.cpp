@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
       {"render", addRenderCommand(app, global)}, {"compare", addCompareCommand(app, global)},
       {"bench", addBenchCommand(app, global)},   {"info", addInfoCommand(app, global)},
       {"trace", addTraceCommand(app, global)},   {"scenes", addScenesCommand(app, global)},
-      {"view", addViewCommand(app, global)},
+      {"study", addStudyCommand(app, global)},   {"view", addViewCommand(app, global)},
   };
   try {
     app.parse(argc, argv);
