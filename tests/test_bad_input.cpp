@@ -579,9 +579,9 @@ const std::vector<BadCase>& badCases() {
       {Group::Outputs,
        "zfight chart on a full disk",
        {},
-       "bench zfight -o {dir}/z --size 32x18 --near 0.1",
+       "study zfight -o {dir}/z --size 32x18",
        2,
-       kError + "cannot write '{dir}/z/zfight.png': File too large",
+       kError + "cannot write '{dir}/z/zfight_near.png': File too large",
        kSmallDisk},
   };
   return cases;

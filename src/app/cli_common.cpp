@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 
 namespace shadelab {
 
@@ -31,6 +32,26 @@ std::vector<ShadingModel> parseShadingModelList(const std::string& text,
     models.push_back(parseNamed(kShadingModelNames, item, option));
   if (models.empty()) throw InputError(option + " '" + text + "': expected at least one model");
   return models;
+}
+
+void checkOutputFolder(const std::filesystem::path& folder, const std::string& firstFile) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::is_directory(folder, error)) {
+    checkWritableFolder(folder / firstFile);
+    return;
+  }
+  if (fs::exists(folder, error))
+    throw InputError("output '" + folder.string() + "' exists and is not a folder");
+  checkWritableFolder(folder);  // the parent
+}
+
+void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile) {
+  namespace fs = std::filesystem;
+  checkOutputFolder(folder, firstFile);
+  std::error_code error;
+  if (!fs::is_directory(folder, error) && !fs::create_directory(folder, error))
+    throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global) {

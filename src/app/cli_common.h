@@ -34,6 +34,12 @@ std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
   return what + ": " + joinNames(namesOf(table));
 }
 
+// Throws InputError naming DIR unless `firstFile` can be written in it: DIR
+// is a writable folder, or does not exist and its parent is writable.
+void checkOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
+// checkOutputFolder, then creates DIR if needed.
+void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
+
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command, once every Vulkan object of it is destroyed: with
 // validation on, shuts the context down (its teardown messages count too)

@@ -6,9 +6,11 @@
 #include <optional>
 #include <sstream>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/image.h"
 #include "core/base/stats.h"
 #include "core/scene/lod.h"
@@ -21,6 +23,7 @@ namespace shadelab {
 namespace {
 
 struct RenderOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "1280x720";
@@ -53,12 +56,12 @@ TextureOptions parseTextureOptions(const RenderOptions& options) {
 std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
                                                   const ErrorMetric& metric, uint32_t msaa) {
   std::filesystem::path csv = std::filesystem::path(folder) / "results.csv";
-  std::ifstream file(csv);
-  if (!file) throw InputError("--bench '" + folder + "': no readable results.csv in it");
-  std::stringstream text;
-  text << file.rdbuf();
-  return candidatesFromBench(parseBenchCsv(text.str(), csv.string()), csv.string(), scene.name,
-                             metric, msaa);
+  std::error_code error;
+  if (!std::filesystem::exists(csv, error))
+    throw InputError("--bench '" + folder + "': no readable results.csv in it");
+  std::string text = readInputFile(csv, "--bench", kMaxTextInputBytes);
+  return candidatesFromBench(parseBenchCsv(text, csv.string()), csv.string(), scene.name, metric,
+                             msaa);
 }
 
 // Prints every candidate, cheapest first, and why the chosen one won;
@@ -145,6 +148,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
   // Before building: --quality may sweep up to 4x (quality.cpp), the raster reference is 4x.
@@ -206,6 +210,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* command = app.add_subcommand("render", "Render a scene headless to an image file");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/base/image.h"
@@ -15,6 +16,7 @@ namespace shadelab {
 namespace {
 
 struct TraceOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "1280x720";
@@ -30,6 +32,7 @@ int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   checkTriangleBudget(scene, 1.0f, global.maxTriangles, "trace", "--max-triangles");
   TraceSettings settings;
   settings.width = size.width;
@@ -75,6 +78,7 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions& global) {
       app.add_subcommand("trace", "Ray trace a scene on the CPU (Whitted): the reference image");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();

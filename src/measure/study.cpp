@@ -1,0 +1,29 @@
+#include "measure/study.h"
+
+#include "core/base/errors.h"
+
+namespace shadelab {
+
+// Each study's runner, defined in its own study_<name>.cpp.
+StudyResult runZFightStudy(const StudyOptions& options, const StudyServices& services);
+
+const std::vector<Study>& studies() {
+  static const std::vector<Study> table = {
+      {"zfight",
+       "z-fighting per depth mode, perspective and orthographic, against the near plane and "
+       "against the polygons' distance",
+       640, 360, runZFightStudy},
+  };
+  return table;
+}
+
+const Study& findStudy(const std::string& name) {
+  std::string names;
+  for (const Study& study : studies()) {
+    if (study.name == name) return study;
+    names += (names.empty() ? "" : ", ") + std::string(study.name);
+  }
+  throw InputError("study '" + name + "': expected one of " + names);
+}
+
+}  // namespace shadelab
