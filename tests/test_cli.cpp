@@ -263,6 +263,34 @@ TEST_F(Cli, BadCameraOptionsNameTheOption) {
   }
 }
 
+TEST_F(Cli, TraceBouncesIsNotRendersDepth) {
+  CommandResult r = run("trace spheres --bounces 0 --spp 1 --size 32x18 -o " + out("t.png"));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("1 spp, 0 bounces"), std::string::npos) << r.output;
+  CommandResult old = run("trace spheres --depth 3 --size 32x18 -o " + out("t2.png"));
+  EXPECT_EQ(old.exitCode, 2) << "trace's --depth is now --bounces\n" << old.output;
+  EXPECT_FALSE(std::filesystem::exists(out("t2.png")));
+}
+
+TEST_F(Cli, ScenesWithoutLightsOrWithMirrorsAndNoEnvironmentWarn) {
+  std::ofstream(out("dark.json")) << R"({"objects": [{"shape": "sphere"}]})";
+  std::ofstream(out("mirror.json"))
+      << R"({"lights": [{"type": "point", "position": [0, 3, 3]}], "objects": [
+        {"name": "ball", "shape": "sphere", "material": {"reflectivity": 0.9}}]})";
+  CommandResult dark = run("render " + out("dark.json") + " --size 32x18 -o " + out("d.png"));
+  EXPECT_EQ(dark.exitCode, 0) << dark.output;
+  EXPECT_NE(dark.output.find("shadelab: warning: scene 'dark' has no lights"), std::string::npos)
+      << dark.output;
+  CommandResult mirror = run("render " + out("mirror.json") + " --size 32x18 -o " + out("m.png"));
+  EXPECT_EQ(mirror.exitCode, 0) << mirror.output;
+  EXPECT_NE(mirror.output.find("1 reflective or transparent object(s) (first: 'ball') in a scene "
+                               "without an environment"),
+            std::string::npos)
+      << mirror.output;
+  CommandResult lit = run("render default --size 32x18 -o " + out("l.png"));
+  EXPECT_EQ(lit.output.find("warning"), std::string::npos) << lit.output;
+}
+
 TEST_F(Cli, RenderLoadsJsonSceneFile) {
   CommandResult r = run(std::string("render ") + SHADELAB_ASSET_DIR +
                         "/scenes/three-spheres.json -o " + out("a.png") + " --size 64x36");

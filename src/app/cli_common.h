@@ -37,6 +37,9 @@ std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
 // that `firstFile` can be written in it; throws InputError naming it.
 void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
 
+// Prints sceneWarnings (scene.h) to stderr as "shadelab: warning: ...".
+void printSceneWarnings(const Scene& scene, bool rasteriser);
+
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.
 int finishWithValidation(const Context& context, int exitCode);

@@ -21,7 +21,7 @@ struct TraceOptions {
   std::string output;
   std::string size = "1280x720";
   uint32_t samplesPerPixel = 16;
-  uint32_t depth = 5;
+  uint32_t bounces = 5;
   uint32_t threads = 0;
   std::string shadows = "on";
 };
@@ -33,11 +33,12 @@ int runTrace(const TraceOptions& options) {
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
+  printSceneWarnings(scene, false);
   TraceSettings settings;
   settings.width = size.width;
   settings.height = size.height;
   settings.samplesPerPixel = options.samplesPerPixel;
-  settings.maxDepth = options.depth;
+  settings.maxDepth = options.bounces;
   settings.threads = options.threads;
   settings.shadows = shadows;
   // Progress on a terminal only, so logs and pipes get just the summary.
@@ -56,8 +57,9 @@ int runTrace(const TraceOptions& options) {
   const double buildSeconds = std::chrono::duration<double>(built - start).count();
   const double traceSeconds = std::chrono::duration<double>(done - built).count();
   const TraceStats& stats = result.stats;
-  std::printf("wrote %s (%ux%u, scene %s, %u spp, depth %u)\n", options.output.c_str(), size.width,
-              size.height, scene.name.c_str(), settings.samplesPerPixel, settings.maxDepth);
+  std::printf("wrote %s (%ux%u, scene %s, %u spp, %u bounces)\n", options.output.c_str(),
+              size.width, size.height, scene.name.c_str(), settings.samplesPerPixel,
+              settings.maxDepth);
   std::printf(
       "trace: %.3f s (+ %.3f s BVH build), %.2f Mrays/s: %llu primary, %llu shadow, "
       "%llu reflected/refracted (%llu total internal reflections)\n",
@@ -88,8 +90,9 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
       ->capture_default_str()
       ->check(CLI::Range(1u, 256u));
   command
-      ->add_option("--depth", options->depth,
-                   "Reflection/refraction bounces after the primary ray (0: local shading)")
+      ->add_option("--bounces", options->bounces,
+                   "Reflection/refraction bounces after the primary ray (0: local shading); "
+                   "render's --depth is the depth buffer")
       ->capture_default_str()
       ->check(CLI::Range(0u, 64u));
   command
