@@ -256,6 +256,7 @@ TEST_F(Cli, BadSwitchValuesGetOneMessage) {
   for (std::string command : {"render env -o " + out("a.png") + " --env maybe",
                               "render bump -o " + out("a.png") + " --bump maybe",
                               "trace -o " + out("a.png") + " --size 8x8 --shadows maybe",
+                              "trace -o " + out("a.png") + " --size 8x8 --fresnel maybe",
                               "compare -o " + out("a.png") + " --size 8x8 --shadows maybe"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 2) << command << "\n" << r.output;
@@ -266,6 +267,21 @@ TEST_F(Cli, BadSwitchValuesGetOneMessage) {
         << r.output;
     EXPECT_EQ(filesLeft(), 0u) << command;
   }
+}
+
+TEST_F(Cli, TraceEpsilonIsValidated) {
+  for (std::string value : {"-1", "2", "nan", "inf", "abc", "1e-4x"}) {
+    CommandResult r = run("trace -o " + out("a.png") + " --size 8x8 --epsilon " + value);
+    EXPECT_EQ(r.exitCode, 2) << value << "\n" << r.output;
+    EXPECT_NE(r.output.find("expected a number from 0 to 1"), std::string::npos) << value << "\n"
+                                                                                 << r.output;
+    EXPECT_EQ(filesLeft(), 0u) << value;
+  }
+  // Epsilon 0 brings shadow acne back: the image differs from the default's.
+  ASSERT_EQ(run("trace whitted -o " + out("e0.png") + " --size 32x18 --spp 1 --epsilon 0").exitCode,
+            0);
+  ASSERT_EQ(run("trace whitted -o " + out("e.png") + " --size 32x18 --spp 1").exitCode, 0);
+  EXPECT_NE(readText(out("e0.png")), readText(out("e.png")));
 }
 
 TEST_F(Cli, TessellationOutOfRangeIsAUsageError) {
