@@ -537,10 +537,31 @@ TEST_F(Cli, StudyZfightWritesTablesCsvsChartsAndImages) {
   EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
 }
 
+// The CPU studies open no device and write their CSV, chart and traces.
+TEST_F(Cli, StudyAcneAndTirWriteCsvChartAndImages) {
+  CommandResult acne = run("study acne -o " + out("acne") + " --size 80x45");
+  ASSERT_EQ(acne.exitCode, 0) << acne.output;
+  auto rows = csvRows(readText(out("acne/acne.csv")));
+  ASSERT_EQ(rows.size(), 1u + 9) << "header + 9 epsilons";
+  EXPECT_EQ(rows[0][0], "epsilon");
+  EXPECT_EQ(rows[1][0], "0");
+  expectDrawnChart(out("acne/acne.png"));
+  EXPECT_EQ(pngSize(out("acne/trace_epsilon_0.png")), std::make_pair(80u, 45u));
+  CommandResult tir = run("study tir -o " + out("tir") + " --size 32x32");
+  ASSERT_EQ(tir.exitCode, 0) << tir.output;
+  rows = csvRows(readText(out("tir/tir.csv")));
+  ASSERT_EQ(rows.size(), 1u + 5 * 180) << "header + 5 iors x 180 angles";
+  EXPECT_EQ(rows[0][5], "total_internal_reflection");
+  expectDrawnChart(out("tir/tir.png"));
+  EXPECT_EQ(pngSize(out("tir/snells_window_ior1.5.png")), std::make_pair(32u, 32u));
+  EXPECT_NE(tir.output.find("asin(1/ior)"), std::string::npos) << tir.output;
+}
+
 TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_NE(r.output.find("zfight"), std::string::npos) << r.output;
+  for (const char* name : {"zfight", "acne", "tir"})
+    EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, StudyRefusesAnUnknownNameAndWritesNothing) {

@@ -6,6 +6,8 @@ namespace shadelab {
 
 // Each study's runner, defined in its own study_<name>.cpp.
 StudyResult runZFightStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runAcneStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runTirStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -13,6 +15,14 @@ const std::vector<Study>& studies() {
        "z-fighting per depth mode, perspective and orthographic, against the near plane and "
        "against the polygons' distance",
        640, 360, runZFightStudy},
+      {"acne",
+       "the tracer's epsilon against shadow acne (lit points shadowed) and light leaks "
+       "(shadowed points lit); CPU only",
+       320, 180, runAcneStudy},
+      {"tir",
+       "total internal reflection: light refracted out of glass per ior and angle, energy kept, "
+       "the critical angle against asin(1/ior); CPU only",
+       256, 256, runTirStudy},
   };
   return table;
 }
