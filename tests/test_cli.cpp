@@ -557,10 +557,32 @@ TEST_F(Cli, StudyAcneAndTirWriteCsvChartAndImages) {
   EXPECT_NE(tir.output.find("asin(1/ior)"), std::string::npos) << tir.output;
 }
 
+TEST_F(Cli, StudyGouraudHighlightWritesCsvChartAndImages) {
+  CommandResult r = run("study gouraud-highlight -o " + out("gh") + " --size 64x36");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("gh/gouraud-highlight.csv")));
+  ASSERT_EQ(rows.size(), 1u + 8) << "header + 8 subdivisions";
+  EXPECT_EQ(rows[1][1], "2");
+  expectDrawnChart(out("gh/gouraud-highlight.png"));
+  EXPECT_EQ(pngSize(out("gh/gouraud_8x8.png")), std::make_pair(64u, 36u));
+}
+
+TEST_F(Cli, StudyEnvVsTraceWritesCsvChartAndImages) {
+  CommandResult r = run("study env-vs-trace -o " + out("evt") + " --size 96x54");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("evt/env-vs-trace.csv")));
+  ASSERT_EQ(rows.size(), 1u + 4) << "header + 4 shading models";
+  EXPECT_EQ(rows[0][4], "flip_hits_object");
+  EXPECT_EQ(rows[3][0], "phong");
+  expectDrawnChart(out("evt/env-vs-trace.png"));
+  for (const char* image : {"evt/trace.png", "evt/regions.png", "evt/phong.png"})
+    EXPECT_EQ(pngSize(out(image)), std::make_pair(96u, 54u)) << image;
+}
+
 TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* name : {"zfight", "acne", "tir"})
+  for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 

@@ -8,6 +8,8 @@ namespace shadelab {
 StudyResult runZFightStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runAcneStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runTirStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runGouraudHighlightStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runEnvVsTraceStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -23,6 +25,13 @@ const std::vector<Study>& studies() {
        "total internal reflection: light refracted out of glass per ior and angle, energy kept, "
        "the critical angle against asin(1/ior); CPU only",
        256, 256, runTirStudy},
+      {"gouraud-highlight",
+       "Gouraud's peak highlight over Phong's against how finely the plane is subdivided", 320, 180,
+       runGouraudHighlightStudy},
+      {"env-vs-trace",
+       "environment mapping against the traced reflection on env, FLIP split by where the traced "
+       "path goes (hits an object or escapes), per shading model",
+       480, 270, runEnvVsTraceStudy},
   };
   return table;
 }
