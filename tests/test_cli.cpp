@@ -579,10 +579,21 @@ TEST_F(Cli, StudyEnvVsTraceWritesCsvChartAndImages) {
     EXPECT_EQ(pngSize(out(image)), std::make_pair(96u, 54u)) << image;
 }
 
+TEST_F(Cli, StudyBumpSilhouetteWritesCsvChartAndImages) {
+  CommandResult r = run("study bump-silhouette -o " + out("bs") + " --size 64x48");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("bs/bump-silhouette.csv")));
+  ASSERT_EQ(rows.size(), 1u + 5) << "header + 5 tessellations";
+  EXPECT_EQ(rows[0][7], "silhouette_difference");
+  expectDrawnChart(out("bs/bump-silhouette.png"));
+  EXPECT_EQ(pngSize(out("bs/displaced_1024.png")), std::make_pair(64u, 48u));
+}
+
 TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace"})
+  for (const char* name :
+       {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace", "bump-silhouette"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 

@@ -10,6 +10,7 @@ StudyResult runAcneStudy(const StudyOptions& options, const StudyServices& servi
 StudyResult runTirStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runGouraudHighlightStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runEnvVsTraceStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runBumpSilhouetteStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -28,6 +29,10 @@ const std::vector<Study>& studies() {
       {"gouraud-highlight",
        "Gouraud's peak highlight over Phong's against how finely the plane is subdivided", 320, 180,
        runGouraudHighlightStudy},
+      {"bump-silhouette",
+       "a bump-mapped sphere beside the same height field as displaced geometry: outline and "
+       "interior differences",
+       480, 360, runBumpSilhouetteStudy},
       {"env-vs-trace",
        "environment mapping against the traced reflection on env, FLIP split by where the traced "
        "path goes (hits an object or escapes), per shading model",
