@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -169,6 +170,12 @@ TEST_F(Cli, HelpSucceedsForEachCommand) {
   }
 }
 
+TEST_F(Cli, VersionPrintsTheProjectVersion) {
+  CommandResult r = run("--version");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output, "shadelab " SHADELAB_VERSION "\n");
+}
+
 std::string readText(const std::string& path) {
   std::ifstream file(path);
   return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
@@ -211,6 +218,49 @@ TEST_F(Cli, ScenesPrintUnknownNameIsAnInputError) {
   EXPECT_NE(r.output.find("unknown built-in scene 'no-such-scene'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("bump, default, dense"), std::string::npos) << "lists the names";
   EXPECT_EQ(r.output.find('{'), std::string::npos) << "no JSON printed";
+}
+
+// --eye/--at/--up/--fovy draw exactly what a scene file with that camera draws.
+TEST_F(Cli, CameraOptionsRenderLikeTheSameCameraInTheSceneFile) {
+  std::string text = readText(std::string(SHADELAB_ASSET_DIR) + "/scenes/default.json");
+  std::string camera =
+      R"("camera": {"eye": [2.5, 4, 6], "at": [0, 0.5, -0.25], "up": [0.1, 1, 0], "fovy": 30})";
+  text = std::regex_replace(text, std::regex(R"("camera": \{[^}]*\})"), camera);
+  ASSERT_NE(text.find(camera), std::string::npos);
+  std::ofstream(out("camera.json")) << text;
+  for (const auto& [arguments, png] :
+       {std::pair<std::string, std::string>{out("camera.json"), "file.png"},
+        {"default --eye 2.5,4,6 --at 0,0.5,-0.25 --up 0.1,1,0 --fovy 30", "options.png"},
+        {"default", "scene.png"},
+        {"default --eye 2.5,4,6 --at 0,0.5,-0.25 --up 0.1,1,0 --fovy 30 --ortho", "ortho.png"}}) {
+    CommandResult r = run("render " + arguments + " --size 160x90 -o " + out(png));
+    ASSERT_EQ(r.exitCode, 0) << arguments << "\n" << r.output;
+  }
+  shadelab::ImageU8 file = shadelab::readImageU8(out("file.png"));
+  EXPECT_TRUE(shadelab::readImageU8(out("options.png")).pixels == file.pixels);
+  EXPECT_FALSE(shadelab::readImageU8(out("scene.png")).pixels == file.pixels) << "options moved it";
+  EXPECT_FALSE(shadelab::readImageU8(out("ortho.png")).pixels == file.pixels)
+      << "--ortho changed it";
+}
+
+TEST_F(Cli, BadCameraOptionsNameTheOption) {
+  for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--eye 1,2", "--eye '1,2': expected three finite numbers X,Y,Z"},
+           {"--at 0,0,nan", "--at '0,0,nan': expected three finite numbers X,Y,Z"},
+           {"--eye 0,1,2 --at 0,1,2", "--at: at equals eye, so there is no viewing direction"},
+           {"--up 0,0,0", "--up: zero-length up vector"},
+           {"--eye 0,5,0 --at 0,0,0", "--up: up is parallel to the viewing direction"},
+           {"--fovy 180", "--fovy 180: expected degrees greater than 0 and less than 180"},
+           {out("ortho.json") + " --fovy 30",
+            "--fovy: the scene's camera is not a perspective camera"}}) {
+    std::ofstream(out("ortho.json")) << R"({"camera": {"projection": "orthographic"}, "objects": [
+        {"shape": "sphere", "material": {"kd": [1, 1, 1]}}]})";
+    std::string scene = arguments.rfind(out("ortho.json"), 0) == 0 ? "" : "default ";
+    CommandResult r = run("render " + scene + arguments + " -o " + out("camera-bad.png"));
+    EXPECT_EQ(r.exitCode, 2) << arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << arguments << "\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out("camera-bad.png"))) << arguments;
+  }
 }
 
 TEST_F(Cli, RenderLoadsJsonSceneFile) {

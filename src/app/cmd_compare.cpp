@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/base/errors.h"
@@ -25,6 +26,7 @@ namespace shadelab {
 namespace {
 
 struct CompareOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "480x270";
@@ -94,6 +96,7 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   checkOutputPath(sheetPath);
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
 
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;
@@ -163,6 +166,7 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* command = app.add_subcommand(
       "compare", "Shading models side by side with heatmaps and errors against a reference");
   command->add_option("scene", options->scene, "Built-in scene name or scene file");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Sheet image (.png); numbers go to .json")
       ->required();
   command->add_option("--size", options->size, "Size of each view WIDTHxHEIGHT")

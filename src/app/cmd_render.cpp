@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/base/errors.h"
@@ -21,6 +22,7 @@ namespace shadelab {
 namespace {
 
 struct RenderOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "1280x720";
@@ -144,6 +146,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
   if (options.simplify > 0.0f) {
@@ -200,6 +203,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* command = app.add_subcommand("render", "Render a scene headless to an image file");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();

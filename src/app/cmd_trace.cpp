@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/base/errors.h"
@@ -18,6 +19,7 @@ namespace shadelab {
 namespace {
 
 struct TraceOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "1280x720";
@@ -52,6 +54,7 @@ int runTrace(const TraceOptions& options) {
       options.epsilon.empty() ? TraceSettings{}.epsilon : parseEpsilon(options.epsilon);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   TraceSettings settings;
   settings.width = size.width;
   settings.height = size.height;
@@ -98,6 +101,7 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
       app.add_subcommand("trace", "Ray trace a scene on the CPU (Whitted): the reference image");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();

@@ -2,6 +2,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/scene/scene_loader.h"
@@ -15,6 +16,7 @@ namespace shadelab {
 namespace {
 
 struct ViewOptions {
+  CameraOptions camera;
   std::string scene;
   std::string size = "1280x720";
   std::string present = "fifo";
@@ -41,6 +43,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
 
   std::unique_ptr<Window> window;
   try {
@@ -70,6 +73,7 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
       "view", "Interactive window: orbit the scene, toggle shading live (H: keys)");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("--size", options->size, "Initial window size WIDTHxHEIGHT")
       ->capture_default_str();
   command

@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/image.h"
 #include "core/base/split_screen.h"
 #include "core/base/stats.h"
@@ -376,8 +378,17 @@ void Viewer::finishSlotWork(SlotWork& work) {
   if (!work.screenshotPath.empty()) {
     writeImage(toImage(work.screenshot, work.screenshotExtent, swapchain_.format()),
                work.screenshotPath);
+    // The sidecar: what a headless render of this view needs.
+    std::filesystem::path sidecar =
+        std::filesystem::path(work.screenshotPath).replace_extension(".json");
+    const Camera& camera = camera_.camera();
+    std::string name;
+    for (char c : scene_.name)
+      name += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+    writeTextFile(sidecar, "{\"scene\": \"" + name + "\",\n \"camera\": " + cameraJson(camera) +
+                               ",\n \"options\": \"" + cameraOptionLine(camera) + "\"}\n");
     say("wrote " + work.screenshotPath + " (" + std::to_string(work.screenshotExtent.width) + "x" +
-        std::to_string(work.screenshotExtent.height) + ", as presented)");
+        std::to_string(work.screenshotExtent.height) + ", as presented) and " + sidecar.string());
     work.screenshotPath.clear();
     work.screenshot = Buffer();
   }

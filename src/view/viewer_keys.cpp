@@ -61,6 +61,13 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
          v.camera_ = CameraController(v.sceneCamera_);
          v.say("camera reset");
        }},
+      {'V', "V", "print the camera as options for render, trace and compare",
+       [](Viewer& v) {
+         std::string line = cameraOptionLine(v.camera_.camera());
+         std::printf("camera: %s\n", line.c_str());
+         std::fflush(stdout);
+         v.say("camera printed to the terminal: " + line);
+       }},
       {'C', "C", "split screen: the four models side by side, errors against Phong",
        [](Viewer& v) {
          FrameSettings next = v.settings_;
