@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Fuzzes the glTF loader with libFuzzer for 60 s (clang-14 with ASan and
-# UBSan, the `fuzz` preset), after the mutation replay every build runs.
+# Fuzzes the glTF loader with libFuzzer (clang-14 with ASan and UBSan, the
+# `fuzz` preset) for SECONDS (default 60), after the mutation replay every
+# build runs; seeds from tests/fuzz/corpus, keys from tests/fuzz/gltf.dict.
+#   scripts/fuzz.sh [SECONDS]
 # Installs clang-14 and its runtime libraries if missing; the project's
 # other packages come from scripts/setup.sh. Exit 0: no crash.
 set -euo pipefail
@@ -12,6 +14,8 @@ for package in clang-14 libclang-rt-14-dev; do
     DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -qq --no-install-recommends "$package"
   fi
 done
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j "$(nproc)"
+seconds=${1:-60}
+[[ $seconds =~ ^[0-9]+$ ]] || { echo "usage: scripts/fuzz.sh [SECONDS]" >&2; exit 2; }
+cmake --preset fuzz -D SHADELAB_FUZZ_SECONDS="$seconds" >/dev/null
+cmake --build --preset fuzz -j 2
 ctest --preset fuzz

@@ -277,5 +277,19 @@ TEST(ValidationLayer, CountsAnInvalidCall) {
   context.resetValidationReport();
 }
 
+// Messages raised while the device is destroyed count too (what the CLI's
+// exit code reads): an object left alive is reported by vkDestroyDevice.
+TEST(ValidationLayer, CountsWhatTeardownReports) {
+  ContextOptions options;
+  options.validation = true;
+  Context context(options);
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.maxLod = 1.0f;
+  VkSampler leaked = VK_NULL_HANDLE;
+  ASSERT_EQ(vkCreateSampler(context.device(), &info, nullptr, &leaked), VK_SUCCESS);
+  EXPECT_EQ(context.validationReport().total(), 0u);
+  EXPECT_GE(context.shutdown().errors, 1u);
+}
+
 }  // namespace
 }  // namespace shadelab::test

@@ -335,6 +335,23 @@ TEST_F(Viewer, ResizeAndMinimiseRestoreAreValidationClean) {
   EXPECT_GE(std::stoi(builds[1]), 5) << r.output;
 }
 
+// Split screen needs a pixel column per view: a window narrower than that
+// (3 px, 1x1 as when minimised by a window manager) turns it off with a
+// message and the viewer carries on; the teardown is validation clean too.
+TEST_F(Viewer, SplitScreenSurvivesAWindowNarrowerThanItsColumns) {
+  CommandResult r = view(
+      "key C\nframes 3\nresize 3 100\nframes 3\nresize 1 1\nframes 3\nresize 400 200\n"
+      "key C\nframes 3\nresize 2 2\nframes 3\nresize 320 180\nframes 3\nscreenshot end.png\n"
+      "quit\n",
+      "--validate");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("split screen off: the window is narrower than its columns"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(readImageU8(path("end.png")).width, 320u);
+}
+
 TEST_F(Viewer, EveryPresentModeRunsValidationClean) {
   for (const char* mode : {"fifo", "mailbox", "immediate"}) {
     std::ofstream(path("script.txt")) << "frames 5\n";

@@ -34,7 +34,7 @@ std::vector<ShadingModel> parseShadingModelList(const std::string& text,
   return models;
 }
 
-void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile) {
+void checkOutputFolder(const std::filesystem::path& folder, const std::string& firstFile) {
   namespace fs = std::filesystem;
   std::error_code error;
   if (fs::is_directory(folder, error)) {
@@ -44,7 +44,13 @@ void prepareOutputFolder(const std::filesystem::path& folder, const std::string&
   if (fs::exists(folder, error))
     throw InputError("output '" + folder.string() + "' exists and is not a folder");
   checkWritableFolder(folder);  // the parent
-  if (!fs::create_directory(folder, error))
+}
+
+void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile) {
+  namespace fs = std::filesystem;
+  checkOutputFolder(folder, firstFile);
+  std::error_code error;
+  if (!fs::is_directory(folder, error) && !fs::create_directory(folder, error))
     throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
@@ -60,13 +66,32 @@ std::unique_ptr<Context> openContext(const GlobalOptions& global) {
   return std::make_unique<Context>(options);
 }
 
-int finishWithValidation(const Context& context, int exitCode) {
+int finishWithValidation(Context& context, int exitCode) {
   if (!context.validationEnabled()) return exitCode;
-  ValidationReport report = context.validationReport();
+  ValidationReport report = context.shutdown();
   if (report.total() == 0) return exitCode;
   std::fprintf(stderr, "shadelab: the validation layer reported %u error(s) and %u warning(s)\n",
                report.errors, report.warnings);
   return exitCode == 0 ? 1 : exitCode;
+}
+
+OutputGroup::~OutputGroup() {
+  if (kept_) return;
+  std::error_code ignored;
+  for (const std::filesystem::path& path : written_) std::filesystem::remove(path, ignored);
+  if (madeFolder_) std::filesystem::remove(folder_, ignored);  // only if empty
+}
+
+void OutputGroup::add(const std::filesystem::path& path, const std::function<void()>& write) {
+  std::error_code error;
+  if (!folder_.empty() && !madeFolder_ && !std::filesystem::is_directory(folder_, error)) {
+    if (!std::filesystem::create_directory(folder_, error))
+      throw InputError("cannot create output folder '" + folder_.string() +
+                       "': " + error.message());
+    madeFolder_ = true;
+  }
+  write();
+  written_.push_back(path);
 }
 
 }  // namespace shadelab

@@ -2,6 +2,7 @@
 // Helpers shared by the subcommands: option parsing that reports bad values
 // as InputError, and the Vulkan context every command opens the same way.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,15 +34,40 @@ std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
   return what + ": " + joinNames(namesOf(table));
 }
 
-// Creates the output folder DIR if needed (its parent must exist) and checks
-// that `firstFile` can be written in it; throws InputError naming it.
+// Throws InputError naming DIR unless `firstFile` can be written in it: DIR
+// is a writable folder, or does not exist and its parent is writable.
+void checkOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
+// checkOutputFolder, then creates DIR if needed.
 void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
 
 // Prints sceneWarnings (scene.h) to stderr as "shadelab: warning: ...".
 void printSceneWarnings(const Scene& scene, bool rasteriser);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
-// After a command: with validation on, any message turns success into exit 1.
-int finishWithValidation(const Context& context, int exitCode);
+// After a command, once every Vulkan object of it is destroyed: with
+// validation on, shuts the context down (its teardown messages count too)
+// and any message turns success into exit 1.
+int finishWithValidation(Context& context, int exitCode);
+
+// A command's outputs as one: each file is atomic (writeFileAtomically), and
+// if a later one fails the earlier ones of this run are removed, with the
+// folder when this run made it. Nothing of a failed command stays on disk.
+class OutputGroup {
+ public:
+  // `folder`: made on the first write if it does not exist (empty: none).
+  explicit OutputGroup(std::filesystem::path folder = {}) : folder_(std::move(folder)) {}
+  OutputGroup(const OutputGroup&) = delete;
+  OutputGroup& operator=(const OutputGroup&) = delete;
+  ~OutputGroup();
+  // Runs `write` (which writes `path`) and remembers the file.
+  void add(const std::filesystem::path& path, const std::function<void()>& write);
+  void keep() { kept_ = true; }  // all written: leave them
+
+ private:
+  std::filesystem::path folder_;
+  bool madeFolder_ = false;
+  bool kept_ = false;
+  std::vector<std::filesystem::path> written_;
+};
 
 }  // namespace shadelab

@@ -103,8 +103,13 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   const ErrorMetric& charted = findErrorMetric(options.metric, "--metric");
   size_t chartedIndex = size_t(&charted - errorMetrics().data());
   Scene scene = loadScene(options.scene);
-  prepareOutputFolder(options.output, "results.csv");
+  checkOutputFolder(options.output, "results.csv");  // made only with the results
   std::vector<BenchPoint> points = benchPoints(axes);
+  // The raster reference is 4x; the sweep's finest point may be finer.
+  float finest = 4.0f;
+  for (const BenchPoint& point : points) finest = std::max(finest, point.tessellation);
+  checkTriangleBudget(scene, finest, global.maxTriangles, "the sweep's finest tessellation",
+                      "--max-triangles");
 
   std::unique_ptr<Context> context = openContext(global);
   std::vector<BenchResult> results;
@@ -118,12 +123,21 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     });
   }
   fs::path folder(options.output);
-  writeTextFile(folder / "results.csv", benchCsv(results, bench, scene.name));
   std::string title = "Scene " + scene.name + " at " + options.size + ", against the " +
                       bench.reference.name + " reference";
-  writeImage(errorTimeChart(results, chartedIndex, charted, title), folder / "error_vs_time.png");
-  writeImage(errorTriangleChart(results, chartedIndex, charted, title),
-             folder / "error_vs_triangles.png");
+  // The folder is made only now, with the results: a killed or failed bench
+  // leaves no empty folder, and a failed write removes this run's files.
+  OutputGroup outputs(folder);
+  outputs.add(folder / "results.csv",
+              [&] { writeTextFile(folder / "results.csv", benchCsv(results, bench, scene.name)); });
+  outputs.add(folder / "error_vs_time.png", [&] {
+    writeImage(errorTimeChart(results, chartedIndex, charted, title), folder / "error_vs_time.png");
+  });
+  outputs.add(folder / "error_vs_triangles.png", [&] {
+    writeImage(errorTriangleChart(results, chartedIndex, charted, title),
+               folder / "error_vs_triangles.png");
+  });
+  outputs.keep();
   printResults(results, charted, chartedIndex);
   std::printf(
       "device medians over %zu steady frames per setting; wrote %s/{results.csv, "

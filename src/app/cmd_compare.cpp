@@ -98,6 +98,8 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
   printSceneWarnings(scene, true);
+  checkTriangleBudget(scene, 4.0f, global.maxTriangles, "compare (its raster reference is 4x)",
+                      "--max-triangles");
 
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;
@@ -154,8 +156,10 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   }
   std::vector<std::vector<SheetCell>> sheet{renders, heatmaps};
   if (regions) sheet.push_back({regionCell(*regions, report)});
-  writeImage(composeSheet(sheet), sheetPath);
-  writeTextFile(jsonPath, report.dump(2) + "\n");
+  OutputGroup outputs;
+  outputs.add(sheetPath, [&] { writeImage(composeSheet(sheet), sheetPath); });
+  outputs.add(jsonPath, [&] { writeTextFile(jsonPath, report.dump(2) + "\n"); });
+  outputs.keep();
   std::printf("wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
   return finishWithValidation(*context, 0);
 }

@@ -11,6 +11,7 @@
 #include "app/commands.h"
 #include "app/look_options.h"
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/image.h"
 #include "core/base/stats.h"
 #include "core/scene/lod.h"
@@ -44,12 +45,12 @@ struct RenderOptions {
 std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
                                                   const ErrorMetric& metric, uint32_t msaa) {
   std::filesystem::path csv = std::filesystem::path(folder) / "results.csv";
-  std::ifstream file(csv);
-  if (!file) throw InputError("--bench '" + folder + "': no readable results.csv in it");
-  std::stringstream text;
-  text << file.rdbuf();
-  return candidatesFromBench(parseBenchCsv(text.str(), csv.string()), csv.string(), scene.name,
-                             metric, msaa);
+  std::error_code error;
+  if (!std::filesystem::exists(csv, error))
+    throw InputError("--bench '" + folder + "': no readable results.csv in it");
+  std::string text = readInputFile(csv, "--bench", kMaxTextInputBytes);
+  return candidatesFromBench(parseBenchCsv(text, csv.string()), csv.string(), scene.name, metric,
+                             msaa);
 }
 
 // Prints every candidate, cheapest first, and why the chosen one won;
@@ -123,6 +124,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   FrameSettings look;
   applyLookOptions(options.look, look);
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
+  if (options.quality) checkMetricBound(metric, *options.quality, "--quality");
   const Reference& reference = findReference(options.reference, "--reference");
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
@@ -130,6 +132,11 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   printSceneWarnings(scene, true);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
+  // Before building: --quality may sweep up to 4x (quality.cpp), the raster reference is 4x.
+  float largest = options.quality ? std::max(factor, 4.0f) : factor;
+  checkTriangleBudget(scene, largest, global.maxTriangles,
+                      options.quality ? "--quality" : "--tess " + options.tessellation,
+                      "--max-triangles");
   if (options.simplify > 0.0f) {
     SimplifyStats simplified = simplifyForView(scene, view, options.simplify);
     std::printf("simplified loaded meshes to %g px: %llu -> %llu triangles\n", options.simplify,

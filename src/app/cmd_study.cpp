@@ -1,6 +1,7 @@
 // shadelab study [NAME] -o DIR: runs one study of the registry
 // (measure/study.h) into DIR and prints its table; without NAME, lists them.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "app/cli_common.h"
@@ -35,6 +36,8 @@ int runStudy(const StudyCommandOptions& options, const GlobalOptions& global) {
     run.width = size.width;
     run.height = size.height;
   }
+  std::error_code error;
+  bool folderExisted = std::filesystem::is_directory(run.output, error);
   prepareOutputFolder(run.output, std::string(study.name) + ".csv");
 
   // Opened on first use: studies of the CPU tracer open no device.
@@ -51,7 +54,16 @@ int runStudy(const StudyCommandOptions& options, const GlobalOptions& global) {
   services.progress = [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); };
   std::fprintf(stderr, "study %s at %ux%u: %s\n", options.name.c_str(), run.width, run.height,
                std::string(study.summary).c_str());
-  StudyResult result = study.run(run, services);
+  StudyResult result;
+  try {
+    result = study.run(run, services);
+  } catch (...) {
+    // A failed study (a bad size, a write that failed) leaves nothing: the
+    // folder is removed with what it wrote when this run made it.
+    renderer.reset();
+    if (!folderExisted) std::filesystem::remove_all(run.output, error);
+    throw;
+  }
   renderer.reset();
   std::printf("%s", result.report.c_str());
   std::printf("wrote into %s:", run.output.c_str());

@@ -45,7 +45,7 @@ float parseEpsilon(const std::string& text) {
   return value;
 }
 
-int runTrace(const TraceOptions& options) {
+int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   checkSamplesPerPixel(options.samplesPerPixel);
   bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
@@ -56,6 +56,7 @@ int runTrace(const TraceOptions& options) {
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   printSceneWarnings(scene, false);
+  checkTriangleBudget(scene, 1.0f, global.maxTriangles, "trace", "--max-triangles");
   TraceSettings settings;
   settings.width = size.width;
   settings.height = size.height;
@@ -97,7 +98,7 @@ int runTrace(const TraceOptions& options) {
 
 }  // namespace
 
-CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
+CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions& global) {
   auto options = std::make_shared<TraceOptions>();
   CLI::App* command =
       app.add_subcommand("trace", "Ray trace a scene on the CPU (Whitted): the reference image");
@@ -138,7 +139,7 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
                       "Offset of new rays off the surface against self-intersection (shadow "
                       "acne), world units 0..1, times the hit's largest coordinate above 1 "
                       "(default 1e-4)");
-  return [options] { return runTrace(*options); };
+  return [options, &global] { return runTrace(*options, global); };
 }
 
 }  // namespace shadelab

@@ -49,6 +49,8 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   printSceneWarnings(scene, true);
+  checkTriangleBudget(scene, viewer.tessellation, global.maxTriangles,
+                      "--tess " + options.tessellation, "--max-triangles");
 
   std::unique_ptr<Window> window;
   try {

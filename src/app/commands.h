@@ -2,14 +2,18 @@
 // Subcommands of the shadelab binary. Each registers its options on the CLI11
 // app; its callback runs the command and returns the process exit code.
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <functional>
 #include <string>
+
+#include "core/scene/scene.h"
 
 namespace shadelab {
 
 struct GlobalOptions {
   bool validate = false;
   std::string device;
+  uint64_t maxTriangles = kDefaultMaxTriangles;  // drawn triangles a request may cost
 };
 
 using CommandRunner = std::function<int()>;

@@ -21,6 +21,11 @@ int main(int argc, char** argv) {
                "Enable the Vulkan validation layer; any message makes the exit code non-zero");
   app.add_option("--device", global.device, "Use the Vulkan 1.3 device whose name contains NAME");
   app.set_version_flag("--version", std::string("shadelab ") + SHADELAB_VERSION);
+  app.add_option("--max-triangles", global.maxTriangles,
+                 "Refuse a request estimated to draw more triangles than this (counted before "
+                 "anything is built)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
 
   std::map<std::string, CommandRunner> commands = {
       {"render", addRenderCommand(app, global)}, {"compare", addCompareCommand(app, global)},

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/image.h"
 
 namespace shadelab {
@@ -145,11 +146,8 @@ std::vector<ScriptStep> parseViewerScriptText(const std::string& text, const std
 
 std::vector<ScriptStep> parseViewerScript(const std::filesystem::path& path,
                                           const std::vector<std::string>& keys) {
-  std::ifstream file(path);
-  if (!file) throw InputError("--script " + path.string() + ": cannot open the file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parseViewerScriptText(text.str(), path.string(), keys);
+  std::string text = readInputFile(path, "--script", kMaxTextInputBytes);
+  return parseViewerScriptText(text, path.string(), keys);
 }
 
 }  // namespace shadelab

@@ -1,19 +1,37 @@
 #pragma once
-// Atomic output: write to a temporary file beside the target, then rename,
-// so a failed or interrupted write never leaves a partial file.
+// Honest file I/O. Output: every file is written through writeFileAtomically,
+// which either leaves the complete new file or nothing (not even a temporary).
+// Input: only regular files below a stated size are read, so a FIFO, a device
+// such as /dev/zero or a link to one gets a message instead of a hang.
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace shadelab {
 
-// Same folder (rename is atomic there) and same extension (writers that pick
-// the format by extension still work): "dir/.name.tmp-<pid>.ext".
-std::filesystem::path temporaryBeside(const std::filesystem::path& target);
-// Renames temporary to target; on failure removes the temporary and throws
-// InputError naming the target.
-void replaceWith(const std::filesystem::path& temporary, const std::filesystem::path& target);
 // Throws InputError unless the folder of `path` exists and is writable.
 void checkWritableFolder(const std::filesystem::path& path);
+
+// Writes `bytes` to `path`: a temporary file created exclusively (O_EXCL,
+// random name ".NAME.XXXXXXXXXXXXXXXX.tmp") in the target's folder, every
+// write, fsync and close checked, then renamed over `path`. On any failure the
+// temporary is removed and InputError names `path` and the reason (e.g. "File
+// too large"). SIGINT, SIGTERM and SIGHUP remove a temporary being written
+// before the process ends (kill -9 cannot be caught: see README).
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 void writeTextFile(const std::filesystem::path& path, const std::string& text);
+
+// Input size limits, stated once. Scenes, glTF JSON and viewer scripts are
+// text; buffers, GLB files and images hold binary data.
+inline constexpr uint64_t kMaxTextInputBytes = uint64_t(64) << 20;   // 64 MiB
+inline constexpr uint64_t kMaxBinaryInputBytes = uint64_t(1) << 30;  // 1 GiB
+// Throws InputError naming `what` ("scene", "texture", ...) and `path` unless
+// it is a regular file (after following links) of at most `maxBytes`.
+void checkInputFile(const std::filesystem::path& path, std::string_view what, uint64_t maxBytes);
+// checkInputFile, then the whole file. Opened non-blocking, checked on the
+// open descriptor, so a path swapped for a FIFO after the check cannot hang.
+std::string readInputFile(const std::filesystem::path& path, std::string_view what,
+                          uint64_t maxBytes);
 
 }  // namespace shadelab

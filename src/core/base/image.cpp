@@ -1,5 +1,6 @@
 #include "core/base/image.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <memory>
 #include <system_error>
 
 #include "core/base/errors.h"
@@ -80,15 +82,23 @@ void checkOutputPath(const fs::path& path) {
 
 namespace {
 
-void writeAtomically(const OIIO::ImageBuf& buffer, const fs::path& path) {
+// Encodes in memory (OpenImageIO's IOVecOutput), checking each step and
+// OpenImageIO's own error state, then hands the bytes to the one atomic
+// writer. `spec` holds the pixels' format as stored in the file.
+void writeEncoded(const OIIO::ImageSpec& spec, OIIO::TypeDesc pixelType, const void* pixels,
+                  const fs::path& path) {
   checkOutputPath(path);
-  fs::path temporary = temporaryBeside(path);
-  if (!buffer.write(temporary.string())) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw InputError("cannot write '" + path.string() + "': " + buffer.geterror());
-  }
-  replaceWith(temporary, path);
+  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path.string());
+  if (!output) throw InputError("cannot write '" + path.string() + "': " + OIIO::geterror());
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  bool encoded = output->set_ioproxy(&memory) && output->open(path.string(), spec) &&
+                 output->write_image(pixelType, pixels);
+  encoded = output->close() && encoded;
+  if (!encoded || output->has_error())
+    throw InputError("cannot encode '" + path.string() + "': " + output->geterror());
+  writeFileAtomically(path,
+                      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace
@@ -96,8 +106,7 @@ void writeAtomically(const OIIO::ImageBuf& buffer, const fs::path& path) {
 void writeImage(const ImageU8& image, const fs::path& path) {
   OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");
-  OIIO::ImageBuf buffer(spec, const_cast<uint8_t*>(image.pixels.data()));
-  writeAtomically(buffer, path);
+  writeEncoded(spec, OIIO::TypeDesc::UINT8, image.pixels.data(), path);
 }
 
 void writeImage(const ImageRgba& image, const fs::path& path) {
@@ -105,17 +114,18 @@ void writeImage(const ImageRgba& image, const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
   if (ext != ".exr") return writeImage(encodeSrgb8(image), path);
-  OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT);
+  // Stored as half, like the render target.
+  OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::HALF);
   spec.attribute("oiio:ColorSpace", "Linear");
-  spec.set_format(OIIO::TypeDesc::HALF);  // stored as half, like the render target
-  OIIO::ImageBuf buffer(spec);
-  buffer.set_pixels(OIIO::ROI(0, int(image.width), 0, int(image.height), 0, 1, 0, 4),
-                    OIIO::TypeDesc::FLOAT, image.pixels.data());
-  writeAtomically(buffer, path);
+  // OpenImageIO stamps the current time as the EXR capDate unless DateTime is
+  // given: a fixed (empty) one keeps the file byte-identical run to run.
+  spec.attribute("DateTime", "");
+  writeEncoded(spec, OIIO::TypeDesc::FLOAT, image.pixels.data(), path);
 }
 
 ImageU8 readImageU8(const fs::path& path) {
   if (!fs::exists(path)) throw InputError("image '" + path.string() + "' does not exist");
+  checkInputFile(path, "image", kMaxBinaryInputBytes);
   OIIO::ImageBuf source(path.string());
   if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
     throw InputError("cannot read image '" + path.string() + "': " + source.geterror());

@@ -15,6 +15,10 @@ struct ErrorMetric {
   std::string description;  // for chart axes and messages
   bool lowerIsBetter = true;
   std::function<double(const ImageU8& reference, const ImageU8& image)> measure;
+  // The values the metric can take: a bound outside them is refused before
+  // any measuring (a FLIP of -1 can never be met).
+  double lowest = 0.0;
+  double highest = 0.0;
 
   // Whether `value` meets `bound`: at most the bound for an error, at least
   // it for a quality score such as PSNR.
@@ -25,6 +29,9 @@ struct ErrorMetric {
   double badness(double value) const { return lowerIsBetter ? value : -value; }
 };
 
+// Throws InputError naming `option` and the value when no image can meet
+// `bound`: an error ceiling below `lowest`, a score floor above `highest`.
+void checkMetricBound(const ErrorMetric& metric, double bound, const std::string& option);
 // Throws InputError naming `option` and the metrics that exist.
 const ErrorMetric& findErrorMetric(const std::string& name, const std::string& option);
 const std::vector<ErrorMetric>& errorMetrics();

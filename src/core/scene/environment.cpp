@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
+#include "core/scene/texture.h"
 
 namespace shadelab {
 namespace {
@@ -163,7 +165,11 @@ ImageRgba readLinearImage(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw InputError("image '" + path.string() + "' does not exist");
+  checkInputFile(path, "image", kMaxBinaryInputBytes);
   OIIO::ImageBuf source(path.string());
+  if (!source.init_spec(path.string(), 0, 0))
+    throw InputError("cannot read image '" + path.string() + "': " + source.geterror());
+  checkTextureSize("image '" + path.string() + "'", source.spec().width, source.spec().height);
   if (!source.read(0, 0, true, OIIO::TypeDesc::FLOAT))
     throw InputError("cannot read image '" + path.string() + "': " + source.geterror());
   const OIIO::ImageSpec& spec = source.spec();

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <set>
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/json_nesting.h"
 #include "core/scene/frustum.h"
 #include "core/scene/gltf_detail.h"
@@ -33,11 +33,41 @@ std::vector<uint8_t> readFile(const std::filesystem::path& path) {
     throw InputError("glTF file '" + name + "' does not exist");
   if (std::filesystem::is_directory(path, error))
     throw InputError("glTF file '" + name + "' is a directory");
-  std::ifstream in(path, std::ios::binary);
-  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                             std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw InputError("glTF file '" + name + "' cannot be read");
-  return bytes;
+  std::string text = readInputFile(path, "glTF file", kMaxBinaryInputBytes);
+  return std::vector<uint8_t>(text.begin(), text.end());
+}
+
+// External files (buffers[].uri, images[].uri) of a model read from disk: a
+// URI may not be absolute or climb out of the model's folder with "..", so a
+// downloaded model cannot read /etc/passwd or ~/.ssh as geometry. Links inside
+// the folder are followed: they were put there by the user, not by the file.
+// Only regular files below kMaxBinaryInputBytes are read.
+struct ModelFolder {
+  std::filesystem::path folder;  // absolute, normalised
+};
+bool fileExistsInFolder(const std::string& path, void*) {
+  std::error_code error;
+  return std::filesystem::exists(path, error);
+}
+bool readFileInFolder(std::vector<unsigned char>* out, std::string* error, const std::string& path,
+                      void* userData) {
+  const auto* model = static_cast<const ModelFolder*>(userData);
+  std::filesystem::path file = std::filesystem::absolute(path).lexically_normal();
+  std::filesystem::path relative = file.lexically_relative(model->folder);
+  if (relative.empty() || *relative.begin() == "..") {
+    if (error)
+      *error += "outside the model's folder '" + model->folder.string() +
+                "' (external files must lie under it)";
+    return false;
+  }
+  try {
+    std::string bytes = readInputFile(file, "external file", kMaxBinaryInputBytes);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& refused) {
+    if (error) *error += refused.what();
+    return false;
+  }
 }
 
 // In-memory loads (the fuzzer) must not touch the file system.
@@ -91,7 +121,11 @@ void checkGlbHeader(std::span<const uint8_t> bytes, const std::string& source) {
 tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& source,
                            const std::string& baseDir, bool allowFiles) {
   tinygltf::TinyGLTF loader;
-  if (!allowFiles)
+  ModelFolder folder{std::filesystem::absolute(baseDir.empty() ? "." : baseDir).lexically_normal()};
+  if (allowFiles)
+    loader.SetFsCallbacks(
+        {&fileExistsInFolder, &keepPath, &readFileInFolder, &refuseWrite, &folder});
+  else
     loader.SetFsCallbacks({&noFileExists, &keepPath, &refuseRead, &refuseWrite, nullptr});
   tinygltf::Model model;
   std::string error, warning;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/scene/gltf_detail.h"
+#include "core/scene/texture.h"
 
 namespace shadelab::gltf {
 namespace {
@@ -139,6 +140,7 @@ TextureSlot MaterialTable::slot(int textureIndex, int texCoord, bool srgb,
       "images[" + std::to_string(texture.source) + "]" +
       (image.uri.empty() || image.uri.starts_with("data:") ? std::string()
                                                            : " '" + image.uri + "'");
+  checkTextureSize(source_ + ": " + imageName, image.width, image.height);
   size_t texels = size_t(std::max(image.width, 0)) * size_t(std::max(image.height, 0));
   if (image.image.empty() || texels == 0 || image.component != 4 ||
       (image.bits != 8 && image.bits != 16) ||

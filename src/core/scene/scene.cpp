@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/base/errors.h"
 #include "core/scene/scene_json_fields.h"
 #include "core/scene/transform.h"
 
@@ -124,6 +125,34 @@ uint32_t Scene::addShape(const ShapeDesc& shape) {
 void Scene::retessellate(float scale) {
   for (size_t i = 0; i < meshes.size(); ++i)
     if (shapes[i].kind != ShapeKind::Custom) meshes[i] = buildShape(shapes[i], scale);
+}
+
+Scene::Estimate Scene::estimate(float scale) const {
+  std::vector<MeshSize> perMesh(meshes.size());
+  Estimate total;
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    perMesh[i] = shapes[i].kind == ShapeKind::Custom
+                     ? MeshSize{meshes[i].triangleCount(), meshes[i].vertices.size()}
+                     : estimateShape(shapes[i], scale);
+    total.meshBytes += perMesh[i].bytes();
+  }
+  for (const Object& object : objects) total.drawnTriangles += perMesh[object.mesh].triangles;
+  return total;
+}
+
+void checkTriangleBudget(const Scene& scene, float scale, uint64_t maxTriangles,
+                         const std::string& request, const std::string& budgetName) {
+  Scene::Estimate size = scene.estimate(scale);
+  if (size.drawnTriangles <= maxTriangles) return;
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "scene '%s' at %s: an estimated %llu triangles drawn (%.1f MiB of meshes), more "
+                "than %s %llu",
+                scene.name.c_str(), request.c_str(),
+                static_cast<unsigned long long>(size.drawnTriangles),
+                double(size.meshBytes) / (1 << 20), budgetName.c_str(),
+                static_cast<unsigned long long>(maxTriangles));
+  throw InputError(text);
 }
 
 uint64_t Scene::triangleCount() const {

@@ -162,7 +162,24 @@ struct Scene {
   // Rebuilds every procedural mesh at `scale` times its base tessellation.
   void retessellate(float scale);
   uint64_t triangleCount() const;
+  // Without building: what the scene would cost if every procedural mesh
+  // were rebuilt at `scale`.
+  struct Estimate {
+    uint64_t drawnTriangles = 0;  // summed over objects
+    uint64_t meshBytes = 0;       // each mesh once (objects share meshes)
+  };
+  Estimate estimate(float scale) const;
 };
+
+// The default triangle budget of a request (drawn triangles, summed over
+// objects): 16 M is ~0.6-1.3 GB of vertex and index data and tens of seconds
+// per frame on lavapipe.
+inline constexpr uint64_t kDefaultMaxTriangles = 16'000'000;
+// Throws InputError naming `request` (e.g. "--tess 16"), the estimate and
+// `budgetName` (the option that raises it) when the scene at `scale` would
+// draw more than `maxTriangles`.
+void checkTriangleBudget(const Scene& scene, float scale, uint64_t maxTriangles,
+                         const std::string& request, const std::string& budgetName);
 
 // Built-in scenes need no files: they are assets/scenes/<name>.json embedded
 // in the binary. Each throws InputError for an unknown name, listing the

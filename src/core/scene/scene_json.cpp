@@ -147,6 +147,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/json_nesting.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/scene_json_environment.h"
@@ -607,11 +608,7 @@ Scene loadSceneJson(const std::filesystem::path& path) {
     throw InputError("scene file '" + name + "' does not exist");
   if (std::filesystem::is_directory(path, error))
     throw InputError("scene file '" + name + "' is a directory, expected a .json file");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) throw InputError("scene file '" + name + "' cannot be read");
-  return parseSceneJson(text.str(), name);
+  return parseSceneJson(readInputFile(path, "scene file", kMaxTextInputBytes), name);
 }
 
 }  // namespace shadelab

@@ -52,6 +52,53 @@ Mesh buildShape(const ShapeDesc& shape, float scale) {
   return mesh;
 }
 
+MeshSize estimateShape(const ShapeDesc& shape, float scale) {
+  auto grid = [](uint64_t columns, uint64_t rows, uint64_t copies) {
+    return MeshSize{copies * columns * rows * 2, copies * (columns + 1) * (rows + 1)};
+  };
+  MeshSize size;
+  switch (shape.kind) {
+    case ShapeKind::Plane: {
+      uint64_t side = scaled(shape.tessellation, scale, 1);
+      size = grid(side, side, 1);
+      break;
+    }
+    case ShapeKind::Box:
+      size = {12, 24};
+      break;
+    case ShapeKind::UvSphere: {
+      // Rings of quads between the poles, a fan of triangles at each pole
+      // (mesh_shapes.cpp makeUvSphere).
+      uint64_t slices = scaled(shape.tessellation, scale, 3);
+      uint64_t rings = std::max<uint64_t>(2, slices / 2) - 1;
+      size = {2 * slices * rings, 2 * slices + rings * (slices + 1)};
+      break;
+    }
+    case ShapeKind::Icosphere: {
+      int extra = int(std::lround(std::log2(std::max(scale, 1e-3f))));
+      uint64_t level = uint64_t(std::clamp(int(shape.tessellation) + extra, 0, 7));
+      uint64_t triangles = uint64_t(20) << (2 * level);
+      size = {triangles, triangles};  // shared vertices plus the seam's copies, rounded up
+      break;
+    }
+    case ShapeKind::Torus: {
+      uint64_t major = scaled(shape.tessellation, scale, 3);
+      size = grid(major, std::max<uint64_t>(3, major / 2), 1);
+      break;
+    }
+    case ShapeKind::Teapot: {
+      uint64_t side = scaled(shape.tessellation, scale, 1);
+      size = grid(side, side, utahTeapotPatches().size());
+      break;
+    }
+    case ShapeKind::Custom:
+      break;
+  }
+  // Crease normals split vertices where faces meet: at most three per triangle.
+  if (shape.creaseAngleDegrees >= 0.0f) size.vertices = 3 * size.triangles;
+  return size;
+}
+
 const char* shapeKindName(ShapeKind kind) {
   switch (kind) {
     case ShapeKind::Plane:

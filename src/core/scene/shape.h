@@ -33,4 +33,14 @@ struct ShapeDesc {
 Mesh buildShape(const ShapeDesc& shape, float scale = 1.0f);
 const char* shapeKindName(ShapeKind kind);
 
+// What buildShape(shape, scale) will make, computed without building it, so
+// a request can be refused before it allocates. Custom shapes: zero.
+struct MeshSize {
+  uint64_t triangles = 0;
+  uint64_t vertices = 0;
+  // Host bytes of the vertex and index arrays (48 B per vertex, 12 per triangle).
+  uint64_t bytes() const { return vertices * 48 + triangles * 12; }
+};
+MeshSize estimateShape(const ShapeDesc& shape, float scale = 1.0f);
+
 }  // namespace shadelab

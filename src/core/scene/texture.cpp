@@ -7,9 +7,17 @@
 #include <cmath>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/image.h"
 
 namespace shadelab {
+
+void checkTextureSize(const std::string& name, int64_t width, int64_t height) {
+  if (width > kMaxTextureSide || height > kMaxTextureSide)
+    throw InputError(name + ": " + std::to_string(width) + "x" + std::to_string(height) +
+                     " texels, more than the " + std::to_string(kMaxTextureSide) +
+                     " allowed on a side");
+}
 
 Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
   std::string name = path.string();
@@ -18,22 +26,34 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
     throw InputError("texture file '" + name + "' does not exist");
   if (std::filesystem::is_directory(path, error))
     throw InputError("texture file '" + name + "' is a directory, expected an image");
+  checkInputFile(path, "texture file", kMaxBinaryInputBytes);
   OIIO::ImageBuf source(name);
-  if (!source.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+  // The header first: a 3.5 MB PNG may declare 16384x16384 texels.
+  if (!source.init_spec(name, 0, 0))
+    throw InputError("texture file '" + name +
+                     "' cannot be read as an image: " + source.geterror());
+  checkTextureSize(name, source.spec().width, source.spec().height);
+  // Only floating-point files hold linear light; 8- and 16-bit files hold
+  // encoded values already (sRGB colour, or raw data).
+  OIIO::TypeDesc stored = source.nativespec().format;
+  bool linearLight =
+      stored.basetype == OIIO::TypeDesc::FLOAT || stored.basetype == OIIO::TypeDesc::HALF;
+  // Memory per texel while loading: the file's buffer (1 B per channel for
+  // 8-bit files, 4 B otherwise) plus 4 B of rgba8; on the device the RGBA8
+  // mip chain takes 4 * 4/3 B. 8-bit files are read as bytes: the values are
+  // the same, v / 255 * 255 rounds back to v.
+  OIIO::TypeDesc readAs =
+      stored.basetype == OIIO::TypeDesc::UINT8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+  if (!source.read(0, 0, true, readAs))
     throw InputError("texture file '" + name +
                      "' cannot be read as an image: " + source.geterror());
   const OIIO::ImageSpec& spec = source.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw InputError("texture file '" + name + "' holds no pixels");
-  // Only floating-point files hold linear light; 8- and 16-bit files hold
-  // encoded values already (sRGB colour, or raw data).
-  OIIO::TypeDesc stored = source.nativespec().format;  // `spec` is the float buffer's
-  bool linearLight =
-      stored.basetype == OIIO::TypeDesc::FLOAT || stored.basetype == OIIO::TypeDesc::HALF;
   int channels = spec.nchannels;
-  std::vector<float> raw(size_t(spec.width) * spec.height * channels);
-  source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
-                    OIIO::TypeDesc::FLOAT, raw.data());
+  // Converted a row at a time (get_pixels gives bytes as v / 255), so the
+  // only whole-image copies are the buffer read above and rgba8 below.
+  std::vector<float> row(size_t(spec.width) * channels);
 
   Texture texture;
   texture.name = name;
@@ -46,7 +66,13 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
         std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 255.0f));
   };
   for (size_t p = 0; p < size_t(texture.width) * texture.height; ++p) {
-    const float* in = &raw[p * channels];
+    size_t x = p % texture.width;
+    if (x == 0) {
+      int y = int(p / texture.width);
+      source.get_pixels(OIIO::ROI(0, spec.width, y, y + 1, 0, 1, 0, channels),
+                        OIIO::TypeDesc::FLOAT, row.data());
+    }
+    const float* in = &row[x * channels];
     float rgba[4] = {in[0], channels >= 3 ? in[1] : in[0], channels >= 3 ? in[2] : in[0],
                      channels == 4 ? in[3] : (channels == 2 ? in[1] : 1.0f)};
     for (int c = 0; c < 4; ++c) {

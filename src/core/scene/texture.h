@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/scene/scene.h"
@@ -16,6 +17,12 @@ enum class TextureRole {
   Color,  // sRGB-encoded texels, sampled through an _SRGB format
   Data,   // normal and height maps: the values themselves, linear
 };
+
+// Texture files and glTF images larger than this on a side are refused (not
+// downsampled): 8192x8192 RGBA8 is 256 MiB, its device mip chain 341 MiB.
+inline constexpr int64_t kMaxTextureSide = 8192;
+// Throws InputError naming `name` and its size when a side exceeds the limit.
+void checkTextureSize(const std::string& name, int64_t width, int64_t height);
 
 // Reads PNG, JPEG, Radiance HDR, EXR (anything OpenImageIO reads) into 8-bit
 // RGBA. 8-bit files keep their values; float files (linear light) are sRGB

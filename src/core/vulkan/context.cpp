@@ -89,6 +89,11 @@ Context::~Context() {
   destroy();
 }
 
+ValidationReport Context::shutdown() {
+  destroy();  // the messenger outlives the device, so its teardown messages count
+  return validationReport();
+}
+
 void Context::destroy() {
   if (device_) {
     vkDeviceWaitIdle(device_);

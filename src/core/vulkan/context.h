@@ -59,6 +59,10 @@ class Context {
 
   ValidationReport validationReport() const;
   void resetValidationReport();
+  // Destroys the device and instance now (everything made from them must be
+  // gone) and returns the report including what the layer said during the
+  // teardown, such as objects never destroyed. The Context is unusable after.
+  ValidationReport shutdown();
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const;
   // Records commands into a one-shot command buffer, submits and waits: for

@@ -1,0 +1,676 @@
+// The bad-input battery: one table of what a user (or an attacker) can hand
+// the shadelab binary, across options, scene JSON, images, panoramas, glTF
+// and output paths. Each row states the exit code and how the first line of
+// the output begins; every row also checks that no file was left behind (no
+// output, no temporary, no folder). Rows run in one suite per group, so ctest
+// spreads them over the cores; most fail before a Vulkan device is opened.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "run_command.h"
+
+namespace {
+namespace fs = std::filesystem;
+using shadelab::test::CommandResult;
+using shadelab::test::run;
+
+enum class Group { Options, Json, Images, Gltf, Outputs };
+
+// A file the case needs in its folder. `text` starting with "@" is special:
+// "@fifo" a FIFO with no writer, "@folder" a folder, "@link:TARGET" a
+// symbolic link, "@copy:PATH" a copy of PATH (relative to tests/data).
+struct Setup {
+  const char* name;
+  std::string text;
+};
+
+struct BadCase {
+  Group group;
+  const char* name;
+  std::vector<Setup> files;
+  std::string arguments;  // {dir}: the case's folder, {data}: tests/data
+  int exitCode;
+  std::string firstLine;         // how the output's first line begins ({dir}, {data} as above)
+  std::string environment = "";  // prefixed to the command (e.g. a file size limit)
+};
+
+const std::string kError = "shadelab: error: ";
+// 16 blocks of 512 (dash) or 1024 (bash) bytes: an 8 KiB (16 KiB) file
+// size limit, 0: none at all; SIGXFSZ ignored so that write() fails with EFBIG instead of
+// the process being killed, as on a full disk.
+const std::string kSmallDisk = "ulimit -f 16; trap '' XFSZ;";
+const std::string kNoDisk = "ulimit -f 0; trap '' XFSZ;";
+// Enough ".." to climb from any test folder to the root.
+const std::string kClimb = "../../../../../../../../../../../../../../";
+
+// A scene JSON with one textured plane whose diffuse map is `file`.
+std::string texturedScene(const std::string& file) {
+  return R"({"materials": {"m": {"diffuseMap": ")" + file +
+         R"("}}, "objects": [{"shape": "plane", "material": "m"}]})";
+}
+std::string panoramaScene(const std::string& file) {
+  return R"({"environment": {"type": "equirect", "file": ")" + file + R"("}, "objects": []})";
+}
+// A glTF whose only buffer is `uri` (a triangle's worth of bytes expected).
+std::string gltfWithBuffer(const std::string& uri) {
+  return R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + uri +
+         R"(", "byteLength": 36}], "bufferViews": [{"buffer": 0, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+}
+std::string nested(const std::string& open, const std::string& close, int depth) {
+  std::string text;
+  for (int i = 0; i < depth; ++i) text += open;
+  for (int i = 0; i < depth; ++i) text += close;
+  return text;
+}
+
+const std::vector<BadCase>& badCases() {
+  const std::string render = "render -o {dir}/out.png ";
+  const std::string plane1024 = R"({"objects": [{"shape": "plane", "tessellation": 1024}]})";
+  static const std::vector<BadCase> cases = {
+      // Options: values out of range or of the wrong kind.
+      {Group::Options, "size zero", {}, render + "--size 0x10", 2, kError + "--size '0x10'"},
+      {Group::Options, "size not WxH", {}, render + "--size big", 2, kError + "--size 'big'"},
+      {Group::Options,
+       "size too large",
+       {},
+       render + "--size 65536x65536",
+       2,
+       kError + "size 65536x65536: width and height must be 1..16384"},
+      {Group::Options, "unknown mode", {}, render + "--mode toon", 2, kError + "--mode 'toon'"},
+      {Group::Options, "tess zero", {}, render + "--tess 0", 2, kError + "--tess '0'"},
+      {Group::Options, "tess above 16", {}, render + "--tess 17", 2, kError + "--tess '17'"},
+      {Group::Options,
+       "tess not a number",
+       {},
+       render + "--tess lots",
+       2,
+       kError + "--tess 'lots'"},
+      {Group::Options,
+       "tess 16 on a plane of 1024",
+       {{"plane.json", plane1024}},
+       render + "{dir}/plane.json --tess 16",
+       2,
+       kError + "scene 'plane' at --tess 16: an estimated"},
+      {Group::Options,
+       "40 large spheres",
+       {{"spheres.json",
+         [] {
+           std::string objects;
+           for (int i = 0; i < 40; ++i)  // one mesh of 1 M triangles, drawn 40 times
+             objects += std::string(i ? "," : "") + R"({"shape": "sphere", "tessellation": 1024})";
+           return R"({"objects": [)" + objects + "]}";
+         }()}},
+       render + "{dir}/spheres.json",
+       2,
+       kError + "scene 'spheres' at --tess 1: an estimated"},
+      {Group::Options,
+       "max-triangles zero",
+       {},
+       render + "--max-triangles 0",
+       2,
+       "--max-triangles: Value 0 not in range"},
+      {Group::Options,
+       "budget below the default scene",
+       {},
+       render + "--max-triangles 10",
+       2,
+       kError + "scene 'default' at --tess 1: an estimated"},
+      {Group::Options,
+       "quality negative",
+       {},
+       render + "--quality -1",
+       2,
+       kError + "--quality -1: no image can meet it, expected a mean FLIP"},
+      {Group::Options,
+       "quality ssim above 1",
+       {},
+       render + "--quality 2 --metric ssim",
+       2,
+       kError + "--quality 2: no image can meet it, expected a SSIM"},
+      {Group::Options,
+       "quality unknown metric",
+       {},
+       render + "--quality 0.1 --metric l1",
+       2,
+       kError + "--metric 'l1'"},
+      {Group::Options, "unknown depth", {}, render + "--depth d12", 2, kError + "--depth 'd12'"},
+      {Group::Options, "msaa 3", {}, render + "--msaa 3", 2, "--msaa: "},
+      {Group::Options,
+       "unknown filter",
+       {},
+       render + "--filter cubic",
+       2,
+       kError + "--filter 'cubic'"},
+      {Group::Options,
+       "unknown scene",
+       {},
+       render + "nowhere",
+       2,
+       kError + "unknown scene 'nowhere'"},
+      {Group::Options,
+       "trace spp not square",
+       {},
+       "trace -o {dir}/t.png --size 8x8 --spp 3",
+       2,
+       kError + "samples per pixel 3: expected a square number"},
+      {Group::Options,
+       "compare unknown mode",
+       {},
+       "compare -o {dir}/s.png --modes flat,toon",
+       2,
+       kError + "--modes 'toon'"},
+      {Group::Options,
+       "bench unknown sweep",
+       {},
+       "bench -o {dir}/b --sweep everything",
+       2,
+       kError + "--sweep 'everything'"},
+      {Group::Options,
+       "bench tess budget",
+       {{"plane.json", plane1024}},
+       "bench {dir}/plane.json -o {dir}/b --tess 1,16",
+       2,
+       kError + "scene 'plane' at the sweep's finest tessellation: an estimated"},
+      {Group::Options,
+       "unknown device",
+       {},
+       render + "--device nosuchgpu",
+       2,
+       kError + "--device: no Vulkan 1.3 device whose name contains 'nosuchgpu'"},
+
+      // Scene JSON.
+      {Group::Json,
+       "missing file",
+       {},
+       render + "{dir}/gone.json",
+       2,
+       kError + "scene file '{dir}/gone.json' does not exist"},
+      {Group::Json,
+       "syntax error",
+       {{"s.json", R"({"objects": [)"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: "},
+      {Group::Json,
+       "empty file",
+       {{"s.json", ""}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: "},
+      {Group::Json,
+       "no objects",
+       {{"s.json", "{}"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: objects: "},
+      {Group::Json,
+       "unknown shape",
+       {{"s.json", R"({"objects": [{"shape": "cone"}]})"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: objects[0].shape: "},
+      {Group::Json,
+       "tessellation above 1024",
+       {{"s.json", R"({"objects": [{"shape": "sphere", "tessellation": 2000}]})"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: objects[0].tessellation: "},
+      {Group::Json,
+       "wrong type",
+       {{"s.json", R"({"objects": [{"shape": "plane", "size": "big"}]})"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: objects[0].size: "},
+      {Group::Json,
+       "nested 300 deep",
+       {{"s.json", R"({"objects": [], "extras": )" + nested("[", "]", 300) + "}"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: "},
+      {Group::Json,
+       "nested 200000 deep",
+       {{"s.json", R"({"objects": [], "extras": )" + nested("[", "]", 200000) + "}"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: "},
+      {Group::Json,
+       "scene is a folder",
+       {{"s.json", "@folder"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "scene file '{dir}/s.json' is a directory"},
+      {Group::Json,
+       "scene is a FIFO",
+       {{"s.json", "@fifo"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "scene file '{dir}/s.json' is a FIFO, expected a regular file"},
+      {Group::Json,
+       "scene links to /dev/zero",
+       {{"s.json", "@link:/dev/zero"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "scene file '{dir}/s.json' is a character device, expected a regular file"},
+      {Group::Json,
+       "scene without extension",
+       {},
+       render + "{dir}/../../../../../../../../../../../../../../dev/zero",
+       2,
+       kError + "scene file '{dir}/../../../../../../../../../../../../../../dev/zero': unknown "
+                "file type"},
+      {Group::Json,
+       "camera fovy zero",
+       {{"s.json", R"({"camera": {"fovy": 0}, "objects": []})"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: camera.fovy: "},
+      {Group::Json,
+       "gltf object missing",
+       {{"s.json", R"({"objects": [{"gltf": "gone.gltf"}]})"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: objects[0].gltf: "},
+
+      // Images: textures and panoramas.
+      {Group::Images,
+       "texture missing",
+       {{"s.json", texturedScene("gone.png")}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+      {Group::Images,
+       "texture is a FIFO",
+       {{"s.json", texturedScene("t.png")}, {"t.png", "@fifo"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+      {Group::Images,
+       "texture links to /dev/zero",
+       {{"s.json", texturedScene("t.png")}, {"t.png", "@link:/dev/zero"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+      {Group::Images,
+       "texture climbs to /dev/zero",
+       {{"s.json", texturedScene(kClimb + "dev/zero")}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+      {Group::Images,
+       "texture is text",
+       {{"s.json", texturedScene("t.png")}, {"t.png", "hello"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+      {Group::Images,
+       "texture is a folder",
+       {{"s.json", texturedScene("t.png")}, {"t.png", "@folder"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+      {Group::Images,
+       "texture 16384 square",
+       {{"s.json", texturedScene("t.png")}, {"t.png", "@copy:bad/huge_16384.png"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+      {Group::Images,
+       "panorama missing",
+       {{"s.json", panoramaScene("gone.hdr")}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: environment.file: "},
+      {Group::Images,
+       "panorama is a FIFO",
+       {{"s.json", panoramaScene("p.hdr")}, {"p.hdr", "@fifo"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: environment.file: "},
+      {Group::Images,
+       "panorama links to /dev/zero",
+       {{"s.json", panoramaScene("p.hdr")}, {"p.hdr", "@link:/dev/zero"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: environment.file: "},
+      {Group::Images,
+       "panorama climbs to /dev/zero",
+       {{"s.json", panoramaScene(kClimb + "dev/zero")}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: environment.file: "},
+      {Group::Images,
+       "panorama is text",
+       {{"s.json", panoramaScene("p.hdr")}, {"p.hdr", "hi"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: environment.file: "},
+      {Group::Images,
+       "panorama 16384 square",
+       {{"s.json", panoramaScene("p.png")}, {"p.png", "@copy:bad/huge_16384.png"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: environment.file: "},
+      {Group::Images,
+       "viewer script is a FIFO",
+       {{"keys.txt", "@fifo"}},
+       "view --script {dir}/keys.txt",
+       2,
+       kError + "--script '{dir}/keys.txt' is a FIFO, expected a regular file"},
+      {Group::Images,
+       "viewer script links to /dev/zero",
+       {{"keys.txt", "@link:/dev/zero"}},
+       "view --script {dir}/keys.txt",
+       2,
+       kError + "--script '{dir}/keys.txt' is a character device, expected a regular file"},
+
+      // glTF: the committed broken files, and files made here.
+      {Group::Gltf,
+       "truncated GLB",
+       {},
+       render + "{data}/bad/truncated.glb",
+       2,
+       kError + "{data}/bad/truncated.glb: invalid GLB: truncated"},
+      {Group::Gltf,
+       "syntax error",
+       {},
+       render + "{data}/bad/syntax_error.gltf",
+       2,
+       kError + "{data}/bad/syntax_error.gltf: "},
+      {Group::Gltf,
+       "accessor past its view",
+       {},
+       render + "{data}/bad/accessor_past_buffer.gltf",
+       2,
+       kError + "{data}/bad/accessor_past_buffer.gltf: "},
+      {Group::Gltf,
+       "accessor count overflow",
+       {},
+       render + "{data}/bad/accessor_count_overflow.gltf",
+       2,
+       kError + "{data}/bad/accessor_count_overflow.gltf: "},
+      {Group::Gltf,
+       "accessor offset overflow",
+       {},
+       render + "{data}/bad/accessor_offset_overflow.gltf",
+       2,
+       kError + "{data}/bad/accessor_offset_overflow.gltf: "},
+      {Group::Gltf,
+       "bufferView offset overflow",
+       {},
+       render + "{data}/bad/bufferview_offset_overflow.gltf",
+       2,
+       kError + "{data}/bad/bufferview_offset_overflow.gltf: "},
+      {Group::Gltf,
+       "missing buffer",
+       {},
+       render + "{data}/bad/missing_buffer.gltf",
+       2,
+       kError +
+           "{data}/bad/missing_buffer.gltf: invalid glTF: File not found : does_not_exist.bin"},
+      {Group::Gltf,
+       "missing image",
+       {},
+       render + "{data}/bad/missing_image.gltf",
+       2,
+       kError + "{data}/bad/missing_image.gltf: "},
+      {Group::Gltf,
+       "required extension",
+       {},
+       render + "{data}/bad/required_extension.gltf",
+       2,
+       kError + "{data}/bad/required_extension.gltf: extensionsRequired"},
+      {Group::Gltf,
+       "no triangles",
+       {},
+       render + "{data}/bad/zero_triangles.gltf",
+       2,
+       kError + "{data}/bad/zero_triangles.gltf: "},
+      {Group::Gltf,
+       "index out of range",
+       {},
+       render + "{data}/bad/index_out_of_range.gltf",
+       2,
+       kError + "{data}/bad/index_out_of_range.gltf: "},
+      {Group::Gltf,
+       "buffer climbs to /etc/passwd",
+       {{"m.gltf", gltfWithBuffer(kClimb + "etc/passwd")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: File read error : {dir}/" + kClimb +
+           "etc/passwd : outside the model's folder '{dir}'"},
+      {Group::Gltf,
+       "buffer at an absolute path",
+       {{"m.gltf", gltfWithBuffer("/etc/passwd")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: File not found : /etc/passwd"},
+      {Group::Gltf,
+       "buffer is a FIFO",
+       {{"m.gltf", gltfWithBuffer("b.bin")}, {"b.bin", "@fifo"}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: File read error : {dir}/b.bin : external file "
+                "'{dir}/b.bin' is a FIFO, expected a regular file"},
+      {Group::Gltf,
+       "buffer links to /dev/zero",
+       {{"m.gltf", gltfWithBuffer("b.bin")}, {"b.bin", "@link:/dev/zero"}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: File read error : {dir}/b.bin : external file "
+                "'{dir}/b.bin' is a character device, expected a regular file"},
+      {Group::Gltf,
+       "model is a FIFO",
+       {{"m.gltf", "@fifo"}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "glTF file '{dir}/m.gltf' is a FIFO, expected a regular file"},
+      {Group::Gltf,
+       "model links to /dev/zero",
+       {{"m.glb", "@link:/dev/zero"}},
+       render + "{dir}/m.glb",
+       2,
+       kError + "glTF file '{dir}/m.glb' is a character device, expected a regular file"},
+      {Group::Gltf,
+       "model is empty",
+       {{"m.gltf", ""}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF"},
+      {Group::Gltf,
+       "GLB version 99",
+       {{"m.glb", std::string("glTF\x63\0\0\0\x0c\0\0\0", 12)}},
+       render + "{dir}/m.glb",
+       2,
+       kError + "{dir}/m.glb: invalid GLB: version 99"},
+      {Group::Gltf,
+       "nested 200000 deep",
+       {{"m.gltf", R"({"asset": {"version": "2.0"}, "extras": )" + nested("[", "]", 200000) + "}"}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: "},
+
+      // Outputs: bad paths, and writes that fail half-way (a file size limit
+      // stands in for a full disk).
+      {Group::Outputs,
+       "missing folder",
+       {},
+       "render -o {dir}/no/such/a.png --size 8x8",
+       2,
+       kError + "output '{dir}/no/such/a.png': folder '{dir}/no/such' does not exist"},
+      {Group::Outputs,
+       "unsupported extension",
+       {},
+       "render -o {dir}/a.bmp --size 8x8",
+       2,
+       kError + "output '{dir}/a.bmp': unsupported extension '.bmp'"},
+      {Group::Outputs,
+       "output is a folder",
+       {{"a.png", "@folder"}},
+       "render -o {dir}/a.png --size 8x8",
+       2,
+       kError + "output '{dir}/a.png' is a folder"},
+      {Group::Outputs,
+       "empty output",
+       {},
+       "render -o '' --size 8x8",
+       2,
+       kError + "output path is empty"},
+      {Group::Outputs,
+       "bench into a file",
+       {{"b", "x"}},
+       "bench -o {dir}/b",
+       2,
+       kError + "output '{dir}/b' exists and is not a folder"},
+      {Group::Outputs,
+       "PNG on a full disk",
+       {},
+       "render -o {dir}/a.png --size 256x256",
+       2,
+       kError + "cannot write '{dir}/a.png': File too large",
+       kSmallDisk},
+      {Group::Outputs,
+       "EXR on a full disk",
+       {},
+       "render -o {dir}/a.exr --size 256x256",
+       2,
+       kError + "cannot write '{dir}/a.exr': File too large",
+       kSmallDisk},
+      {Group::Outputs,
+       "trace on a full disk",
+       {},
+       "trace -o {dir}/t.png --size 128x128 --spp 1",
+       2,
+       kError + "cannot write '{dir}/t.png': File too large",
+       kSmallDisk},
+      {Group::Outputs,
+       "compare sheet on a full disk",
+       {},
+       "compare -o {dir}/s.png --size 64x36 --modes flat --reference raster",
+       2,
+       kError + "cannot write '{dir}/s.png': File too large",
+       kSmallDisk},
+      {Group::Outputs,
+       "bench CSV on a full disk",
+       {},
+       "bench -o {dir}/b --size 32x18 --frames 2 --rounds 1 --modes unlit --tess 1 --msaa 1 "
+       "--reference raster",
+       2,
+       kError + "cannot write '{dir}/b/results.csv': File too large",
+       kNoDisk},
+      {Group::Outputs,
+       "bench chart on a full disk",
+       {},
+       "bench -o {dir}/b --size 32x18 --frames 2 --rounds 1 --modes unlit --tess 1 --msaa 1 "
+       "--reference raster",
+       2,
+       kError + "cannot write '{dir}/b/error_vs_time.png': File too large",
+       kSmallDisk},
+      {Group::Outputs,
+       "zfight chart on a full disk",
+       {},
+       "study zfight -o {dir}/z --size 32x18",
+       2,
+       kError + "cannot write '{dir}/z/zfight_near.png': File too large",
+       kSmallDisk},
+  };
+  return cases;
+}
+
+std::string substituted(std::string text, const fs::path& dir) {
+  auto replace = [&](const std::string& key, const std::string& value) {
+    for (size_t at = text.find(key); at != std::string::npos;
+         at = text.find(key, at + value.size()))
+      text.replace(at, key.size(), value);
+  };
+  replace("{dir}", dir.string());
+  replace("{data}", SHADELAB_TEST_DATA_DIR);
+  return text;
+}
+
+std::set<std::string> filesUnder(const fs::path& dir) {
+  std::set<std::string> names;
+  // Links are listed, not followed.
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir))
+    names.insert(fs::relative(entry.path(), dir).string());
+  return names;
+}
+
+void prepare(const fs::path& dir, const Setup& file) {
+  fs::path path = dir / file.name;
+  const std::string& text = file.text;
+  if (text == "@fifo") {
+    ASSERT_EQ(mkfifo(path.c_str(), 0600), 0) << path;
+  } else if (text == "@folder") {
+    fs::create_directory(path);
+  } else if (text.rfind("@link:", 0) == 0) {
+    fs::create_symlink(text.substr(6), path);
+  } else if (text.rfind("@copy:", 0) == 0) {
+    fs::copy_file(fs::path(SHADELAB_TEST_DATA_DIR) / text.substr(6), path);
+  } else {
+    std::ofstream(path, std::ios::binary) << text;
+  }
+}
+
+void runGroup(Group group, const char* groupName) {
+  int index = 0;
+  for (const BadCase& bad : badCases()) {
+    if (bad.group != group) continue;
+    fs::path dir =
+        fs::path(SHADELAB_TEST_OUTPUT_DIR) / "bad_input" / groupName / std::to_string(index++);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const Setup& file : bad.files) prepare(dir, file);
+    std::set<std::string> before = filesUnder(dir);
+    // timeout: a case that hangs (a FIFO read) fails instead of stalling the suite.
+    CommandResult r = run(substituted(bad.arguments, dir), bad.environment + " timeout 60");
+    // The message's first line: the first line of shadelab's own (commands
+    // that report progress print it before), else of CLI11's usage error.
+    std::string expected = substituted(bad.firstLine, dir);
+    size_t start = 0;
+    if (expected.rfind("shadelab: ", 0) == 0) {
+      size_t own = r.output.find("\nshadelab: ");
+      start = r.output.rfind("shadelab: ", 0) == 0 || own == std::string::npos ? 0 : own + 1;
+    }
+    std::string firstLine = r.output.substr(start, r.output.find('\n', start) - start);
+    EXPECT_EQ(r.exitCode, bad.exitCode) << bad.name << "\n" << r.output;
+    EXPECT_EQ(firstLine.substr(0, expected.size()), expected) << bad.name << "\n" << r.output;
+    EXPECT_EQ(filesUnder(dir), before) << bad.name << ": a file was left behind\n" << r.output;
+  }
+}
+
+// At least 60 rows, every group represented.
+TEST(BadInputTable, CoversEveryGroup) {
+  EXPECT_GE(badCases().size(), 60u);
+  for (Group group : {Group::Options, Group::Json, Group::Images, Group::Gltf, Group::Outputs})
+    EXPECT_TRUE(std::any_of(badCases().begin(), badCases().end(),
+                            [&](const BadCase& bad) { return bad.group == group; }));
+}
+
+TEST(BadInputOptions, ExitTwoWithMessageAndNoFile) {
+  runGroup(Group::Options, "options");
+}
+TEST(BadInputJson, ExitTwoWithMessageAndNoFile) {
+  runGroup(Group::Json, "json");
+}
+TEST(BadInputImages, ExitTwoWithMessageAndNoFile) {
+  runGroup(Group::Images, "images");
+}
+TEST(BadInputGltf, ExitTwoWithMessageAndNoFile) {
+  runGroup(Group::Gltf, "gltf");
+}
+TEST(BadInputOutputs, ExitTwoWithMessageAndNoFile) {
+  runGroup(Group::Outputs, "outputs");
+}
+
+}  // namespace
