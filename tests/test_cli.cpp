@@ -281,6 +281,34 @@ TEST_F(Cli, BadCameraOptionsNameTheOption) {
   }
 }
 
+TEST_F(Cli, TraceBouncesIsNotRendersDepth) {
+  CommandResult r = run("trace spheres --bounces 0 --spp 1 --size 32x18 -o " + out("t.png"));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("1 spp, 0 bounces"), std::string::npos) << r.output;
+  CommandResult old = run("trace spheres --depth 3 --size 32x18 -o " + out("t2.png"));
+  EXPECT_EQ(old.exitCode, 2) << "trace's --depth is now --bounces\n" << old.output;
+  EXPECT_FALSE(std::filesystem::exists(out("t2.png")));
+}
+
+TEST_F(Cli, ScenesWithoutLightsOrWithMirrorsAndNoEnvironmentWarn) {
+  std::ofstream(out("dark.json")) << R"({"objects": [{"shape": "sphere"}]})";
+  std::ofstream(out("mirror.json"))
+      << R"({"lights": [{"type": "point", "position": [0, 3, 3]}], "objects": [
+        {"name": "ball", "shape": "sphere", "material": {"reflectivity": 0.9}}]})";
+  CommandResult dark = run("render " + out("dark.json") + " --size 32x18 -o " + out("d.png"));
+  EXPECT_EQ(dark.exitCode, 0) << dark.output;
+  EXPECT_NE(dark.output.find("shadelab: warning: scene 'dark' has no lights"), std::string::npos)
+      << dark.output;
+  CommandResult mirror = run("render " + out("mirror.json") + " --size 32x18 -o " + out("m.png"));
+  EXPECT_EQ(mirror.exitCode, 0) << mirror.output;
+  EXPECT_NE(mirror.output.find("1 reflective or transparent object(s) (first: 'ball') in a scene "
+                               "without an environment"),
+            std::string::npos)
+      << mirror.output;
+  CommandResult lit = run("render default --size 32x18 -o " + out("l.png"));
+  EXPECT_EQ(lit.output.find("warning"), std::string::npos) << lit.output;
+}
+
 TEST_F(Cli, RenderLoadsJsonSceneFile) {
   CommandResult r = run(std::string("render ") + SHADELAB_ASSET_DIR +
                         "/scenes/three-spheres.json -o " + out("a.png") + " --size 64x36");
@@ -324,6 +352,7 @@ TEST_F(Cli, BadSwitchValuesGetOneMessage) {
   for (std::string command : {"render env -o " + out("a.png") + " --env maybe",
                               "render bump -o " + out("a.png") + " --bump maybe",
                               "trace -o " + out("a.png") + " --size 8x8 --shadows maybe",
+                              "trace -o " + out("a.png") + " --size 8x8 --fresnel maybe",
                               "compare -o " + out("a.png") + " --size 8x8 --shadows maybe"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 2) << command << "\n" << r.output;
@@ -334,6 +363,21 @@ TEST_F(Cli, BadSwitchValuesGetOneMessage) {
         << r.output;
     EXPECT_EQ(filesLeft(), 0u) << command;
   }
+}
+
+TEST_F(Cli, TraceEpsilonIsValidated) {
+  for (std::string value : {"-1", "2", "nan", "inf", "abc", "1e-4x"}) {
+    CommandResult r = run("trace -o " + out("a.png") + " --size 8x8 --epsilon " + value);
+    EXPECT_EQ(r.exitCode, 2) << value << "\n" << r.output;
+    EXPECT_NE(r.output.find("expected a number from 0 to 1"), std::string::npos) << value << "\n"
+                                                                                 << r.output;
+    EXPECT_EQ(filesLeft(), 0u) << value;
+  }
+  // Epsilon 0 brings shadow acne back: the image differs from the default's.
+  ASSERT_EQ(run("trace whitted -o " + out("e0.png") + " --size 32x18 --spp 1 --epsilon 0").exitCode,
+            0);
+  ASSERT_EQ(run("trace whitted -o " + out("e.png") + " --size 32x18 --spp 1").exitCode, 0);
+  EXPECT_NE(readText(out("e0.png")), readText(out("e.png")));
 }
 
 TEST_F(Cli, TessellationOutOfRangeIsAUsageError) {
@@ -600,10 +644,64 @@ TEST_F(Cli, StudyZfightWritesTablesCsvsChartsAndImages) {
   EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
 }
 
+// The CPU studies open no device and write their CSV, chart and traces.
+TEST_F(Cli, StudyAcneAndTirWriteCsvChartAndImages) {
+  CommandResult acne = run("study acne -o " + out("acne") + " --size 80x45");
+  ASSERT_EQ(acne.exitCode, 0) << acne.output;
+  auto rows = csvRows(readText(out("acne/acne.csv")));
+  ASSERT_EQ(rows.size(), 1u + 9) << "header + 9 epsilons";
+  EXPECT_EQ(rows[0][0], "epsilon");
+  EXPECT_EQ(rows[1][0], "0");
+  expectDrawnChart(out("acne/acne.png"));
+  EXPECT_EQ(pngSize(out("acne/trace_epsilon_0.png")), std::make_pair(80u, 45u));
+  CommandResult tir = run("study tir -o " + out("tir") + " --size 32x32");
+  ASSERT_EQ(tir.exitCode, 0) << tir.output;
+  rows = csvRows(readText(out("tir/tir.csv")));
+  ASSERT_EQ(rows.size(), 1u + 5 * 180) << "header + 5 iors x 180 angles";
+  EXPECT_EQ(rows[0][5], "total_internal_reflection");
+  expectDrawnChart(out("tir/tir.png"));
+  EXPECT_EQ(pngSize(out("tir/snells_window_ior1.5.png")), std::make_pair(32u, 32u));
+  EXPECT_NE(tir.output.find("asin(1/ior)"), std::string::npos) << tir.output;
+}
+
+TEST_F(Cli, StudyGouraudHighlightWritesCsvChartAndImages) {
+  CommandResult r = run("study gouraud-highlight -o " + out("gh") + " --size 64x36");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("gh/gouraud-highlight.csv")));
+  ASSERT_EQ(rows.size(), 1u + 8) << "header + 8 subdivisions";
+  EXPECT_EQ(rows[1][1], "2");
+  expectDrawnChart(out("gh/gouraud-highlight.png"));
+  EXPECT_EQ(pngSize(out("gh/gouraud_8x8.png")), std::make_pair(64u, 36u));
+}
+
+TEST_F(Cli, StudyEnvVsTraceWritesCsvChartAndImages) {
+  CommandResult r = run("study env-vs-trace -o " + out("evt") + " --size 96x54");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("evt/env-vs-trace.csv")));
+  ASSERT_EQ(rows.size(), 1u + 4) << "header + 4 shading models";
+  EXPECT_EQ(rows[0][4], "flip_hits_object");
+  EXPECT_EQ(rows[3][0], "phong");
+  expectDrawnChart(out("evt/env-vs-trace.png"));
+  for (const char* image : {"evt/trace.png", "evt/regions.png", "evt/phong.png"})
+    EXPECT_EQ(pngSize(out(image)), std::make_pair(96u, 54u)) << image;
+}
+
+TEST_F(Cli, StudyBumpSilhouetteWritesCsvChartAndImages) {
+  CommandResult r = run("study bump-silhouette -o " + out("bs") + " --size 64x48");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("bs/bump-silhouette.csv")));
+  ASSERT_EQ(rows.size(), 1u + 5) << "header + 5 tessellations";
+  EXPECT_EQ(rows[0][7], "silhouette_difference");
+  expectDrawnChart(out("bs/bump-silhouette.png"));
+  EXPECT_EQ(pngSize(out("bs/displaced_1024.png")), std::make_pair(64u, 48u));
+}
+
 TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_NE(r.output.find("zfight"), std::string::npos) << r.output;
+  for (const char* name :
+       {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace", "bump-silhouette"})
+    EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, StudyRefusesAnUnknownNameAndWritesNothing) {

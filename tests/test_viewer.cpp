@@ -191,6 +191,25 @@ TEST_F(Viewer, AutoTessellationMatchesHeadlessTessAuto) {
   EXPECT_TRUE(matchesImage(headless(scene, ShadingModel::Phong), shot));
 }
 
+// view takes the render options it can honour: --tess auto, --env, --filter,
+// --bump, --mip-tint start the viewer where the keys would take it.
+TEST_F(Viewer, RenderOptionsSetTheInitialState) {
+  CommandResult r = view("key O\nframes 2\nscreenshot start.png\n",
+                         "mip-plane --tess auto --filter nearest --mip-tint --bump off --env off");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  Scene scene = builtinScene("mip-plane");
+  tessellateForView(scene, ViewSize{scene.camera, kWidth, kHeight}, 0.5f);
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
+  settings.textures.filterOverride = TextureFilter::Nearest;
+  settings.textures.mipTint = true;
+  settings.textures.bump = false;
+  settings.environment = false;
+  ImageU8 shot = readImageU8(path("start.png"));
+  EXPECT_TRUE(matchesImage(render(scene, settings), shot));
+  settings.textures.mipTint = false;  // must-fail twin: the options did change the image
+  EXPECT_FALSE(matchesImage(render(scene, settings), shot));
+}
+
 TEST_F(Viewer, TextureKeysMatchHeadlessRendersWithTheSameOptions) {
   CommandResult bump = view("key O\nkey B\nframes 2\nscreenshot flat-bump.png\n", "bump");
   ASSERT_EQ(bump.exitCode, 0) << bump.output;

@@ -54,6 +54,11 @@ void prepareOutputFolder(const std::filesystem::path& folder, const std::string&
     throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
+void printSceneWarnings(const Scene& scene, bool rasteriser) {
+  for (const std::string& warning : sceneWarnings(scene, rasteriser))
+    std::fprintf(stderr, "shadelab: warning: %s\n", warning.c_str());
+}
+
 std::unique_ptr<Context> openContext(const GlobalOptions& global) {
   ContextOptions options;
   options.validation = global.validate;

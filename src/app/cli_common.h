@@ -40,6 +40,9 @@ void checkOutputFolder(const std::filesystem::path& folder, const std::string& f
 // checkOutputFolder, then creates DIR if needed.
 void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
 
+// Prints sceneWarnings (scene.h) to stderr as "shadelab: warning: ...".
+void printSceneWarnings(const Scene& scene, bool rasteriser);
+
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command, once every Vulkan object of it is destroyed: with
 // validation on, shuts the context down (its teardown messages count too)

@@ -9,6 +9,7 @@
 #include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/look_options.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/image.h"
@@ -33,25 +34,13 @@ struct RenderOptions {
   float tessellationError = 0.5f;
   float simplify = 0.0f;
   uint32_t msaa = 1;
-  std::string environment = "on";
-  std::string filter;  // empty: each material's own sampler
-  std::string bump = "on";
-  bool mipTint = false;
+  LookOptions look;  // --env, --filter, --bump, --mip-tint
   std::string depth = "d32f";
   std::optional<double> quality;  // a bound in `metric`'s units
   std::string metric = "flip";
   std::string reference = "trace";
   std::string benchFolder;  // cached bench results; empty: a quick sweep
 };
-
-TextureOptions parseTextureOptions(const RenderOptions& options) {
-  TextureOptions textures;
-  if (!options.filter.empty())
-    textures.filterOverride = parseNamed(kTextureFilterNames, options.filter, "--filter");
-  textures.bump = parseNamed(kOnOffNames, options.bump, "--bump");
-  textures.mipTint = options.mipTint;
-  return textures;
-}
 
 std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
                                                   const ErrorMetric& metric, uint32_t msaa) {
@@ -126,29 +115,21 @@ void printTimings(const RenderStats& stats) {
       percentile(wall, 95.0));
 }
 
-float parseTessellationFactor(const std::string& text) {
-  float factor = 0.0f;
-  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), factor);
-  if (error != std::errc() || end != text.data() + text.size() || !(factor >= 0.125f) ||
-      !(factor <= 16.0f))
-    throw InputError("--tess '" + text + "': expected a factor from 0.125 to 16, or auto");
-  return factor;
-}
-
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   bool autoTessellation = options.tessellation == "auto";
   float factor = autoTessellation ? 1.0f : parseTessellationFactor(options.tessellation);
   BenchPoint point{parseNamed(kShadingModelNames, options.mode, "--mode"), factor, options.msaa};
   DepthMode depth = parseNamed(kDepthModeNames, options.depth, "--depth");
-  bool environment = parseNamed(kOnOffNames, options.environment, "--env");
+  FrameSettings look;
+  applyLookOptions(options.look, look);
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
   if (options.quality) checkMetricBound(metric, *options.quality, "--quality");
   const Reference& reference = findReference(options.reference, "--reference");
-  TextureOptions textures = parseTextureOptions(options);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
+  printSceneWarnings(scene, true);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
   // Before building: --quality may sweep up to 4x (quality.cpp), the raster reference is 4x.
@@ -189,8 +170,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.frames = options.frames;
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
-    settings.environment = environment;
-    settings.textures = textures;
+    settings.environment = look.environment;
+    settings.textures = look.textures;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -246,24 +227,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
-  command
-      ->add_option("--env", options->environment,
-                   namedHelp("Environment mapping (reflections, refraction, skybox) when the "
-                             "scene has an environment",
-                             kOnOffNames))
-      ->capture_default_str();
-  command->add_option("--filter", options->filter,
-                      "Texture filter for every texture, overriding the materials' samplers: "
-                      "nearest (base level, no mipmaps), bilinear (nearest mip level), "
-                      "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
-  command
-      ->add_option("--bump", options->bump,
-                   namedHelp("Bump mapping (normal and height maps; Phong and Blinn-Phong only)",
-                             kOnOffNames))
-      ->capture_default_str();
-  command->add_flag("--mip-tint", options->mipTint,
-                    "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
-                    "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
+  addLookOptions(command, options->look);
   command
       ->add_option(
           "--depth", options->depth,

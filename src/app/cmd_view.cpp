@@ -5,6 +5,7 @@
 #include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/look_options.h"
 #include "core/scene/scene_loader.h"
 #include "view/viewer.h"
 
@@ -22,7 +23,8 @@ struct ViewOptions {
   std::string present = "fifo";
   std::string script;
   std::string mode = "phong";
-  float tessellation = 1.0f;
+  std::string tessellation = "1";
+  LookOptions look;  // --env, --filter, --bump, --mip-tint
   uint32_t msaa = 1;
   std::string depth = "d32f";
   bool keyLatency = false;
@@ -36,7 +38,9 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.initial.shadingModel = parseNamed(kShadingModelNames, options.mode, "--mode");
   viewer.initial.msaaSamples = options.msaa;
   viewer.initial.depth = parseNamed(kDepthModeNames, options.depth, "--depth");
-  viewer.tessellation = options.tessellation;
+  applyLookOptions(options.look, viewer.initial);
+  viewer.autoTessellation = options.tessellation == "auto";
+  if (!viewer.autoTessellation) viewer.tessellation = parseTessellationFactor(options.tessellation);
   viewer.logKeyLatency = options.keyLatency;
   if (!options.script.empty())
     viewer.script = parseViewerScript(options.script, Viewer::keyNames());
@@ -44,8 +48,9 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
-  checkTriangleBudget(scene, options.tessellation, global.maxTriangles,
-                      "--tess " + std::to_string(options.tessellation), "--max-triangles");
+  printSceneWarnings(scene, true);
+  checkTriangleBudget(scene, viewer.tessellation, global.maxTriangles,
+                      "--tess " + options.tessellation, "--max-triangles");
 
   std::unique_ptr<Window> window;
   try {
@@ -87,9 +92,10 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command
       ->add_option("--tess", options->tessellation,
-                   "Initial tessellation scale, as for render (T and G change it)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.125f, 16.0f));
+                   "Initial tessellation scale 0.125..16 as for render, or auto: for the "
+                   "initial view, chord error <= 0.5 px (T, G and A change it)")
+      ->capture_default_str();
+  addLookOptions(command, options->look);
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));

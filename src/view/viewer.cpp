@@ -10,6 +10,7 @@
 #include "core/base/image.h"
 #include "core/base/split_screen.h"
 #include "core/base/stats.h"
+#include "core/scene/lod.h"
 #include "core/vulkan/vk_check.h"
 #include "view/present_pass.h"
 
@@ -86,6 +87,9 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
     settings_.width = uint32_t(size.x);
     settings_.height = uint32_t(size.y);
   }
+  if (options.autoTessellation && settings_.width > 0 && settings_.height > 0)
+    tessellateForView(scene_, ViewSize{camera_.camera(), settings_.width, settings_.height},
+                      kAutoTessellationErrorPixels);
   // Settings the device cannot draw are an InputError here, before any frame.
   uploadScene();
   for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());

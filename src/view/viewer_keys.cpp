@@ -188,10 +188,9 @@ void Viewer::setTessellation(float scale) {
 // As render --tess auto, for the view on screen now; the camera may move on
 // afterwards (press A again), T and G go back to a fixed factor.
 void Viewer::autoTessellate() {
-  constexpr float kMaxErrorPixels = 0.5f;  // render --tess-error's default
   VkExtent2D extent = swapchain_.extent();
   tessellateForView(scene_, ViewSize{camera_.camera(), extent.width, extent.height},
-                    kMaxErrorPixels);
+                    kAutoTessellationErrorPixels);
   uploadScene();
   say("automatic tessellation for this view (chord error <= 0.5 px): " +
       withThousands(gpuScene_.triangles) + " triangles");

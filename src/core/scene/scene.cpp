@@ -89,6 +89,27 @@ std::string cameraJson(const Camera& camera) {
          "}";
 }
 
+std::vector<std::string> sceneWarnings(const Scene& scene, bool rasteriser) {
+  std::vector<std::string> warnings;
+  if (scene.lights.empty() && !scene.objects.empty())
+    warnings.push_back("scene '" + scene.name +
+                       "' has no lights: only ambient light and emission will show");
+  if (rasteriser && !scene.environment.present()) {
+    size_t count = 0;
+    std::string first;
+    for (const Object& object : scene.objects)
+      if (object.material.reflectivity > 0.0f || object.material.transparency > 0.0f)
+        if (count++ == 0) first = object.name;
+    if (count > 0)
+      warnings.push_back(
+          std::to_string(count) + " reflective or transparent object(s) (first: '" + first +
+          "') in a scene without an environment: the rasteriser reflects and refracts only the "
+          "environment, so they show their local shading alone (add an \"environment\" to the "
+          "scene, or see them with `trace`)");
+  }
+  return warnings;
+}
+
 uint32_t Scene::addMesh(Mesh mesh) {
   meshes.push_back(std::move(mesh));
   shapes.push_back(ShapeDesc{});  // ShapeKind::Custom

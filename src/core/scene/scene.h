@@ -200,4 +200,11 @@ inline constexpr glm::vec3 kZFightNearColor{1.0f, 0.0f, 0.0f};
 inline constexpr glm::vec3 kZFightFarColor{0.0f, 0.0f, 1.0f};
 Scene zfightScene(Projection projection, float near);
 
+// What a scene probably does not mean, worth a warning before drawing it: no
+// lights (only ambient and emission show); for the rasteriser
+// (`rasteriser`), reflective or transparent materials with no environment
+// (its environment term has nothing to show, so they look matte). Empty when
+// nothing is suspicious.
+std::vector<std::string> sceneWarnings(const Scene& scene, bool rasteriser);
+
 }  // namespace shadelab
