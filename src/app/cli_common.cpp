@@ -33,6 +33,45 @@ std::vector<ShadingModel> parseShadingModelList(const std::string& text,
   return models;
 }
 
+void ShadowOptions::add(CLI::App* command) {
+  command
+      ->add_option("--shadows", method,
+                   namedHelp("Shadow maps and their filter (off: no shadows)", kShadowMethodNames))
+      ->capture_default_str();
+  command->add_option("--shadow-size", size, "Shadow map size in texels (square)")
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-bias", bias,
+                   "Constant shadow bias towards the light, in shadow-map texels (0..64)")
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-slope-bias", slopeBias,
+                   "Slope-scaled shadow bias: texels times tan(angle of N and L) (0..64)")
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-normal-offset", normalOffset,
+                   "Normal-offset shadow bias: texels along the normal times sin(angle) (0..64)")
+      ->capture_default_str();
+}
+
+void ShadowOptions::apply(FrameSettings& settings) const {
+  settings.shadows = parseNamed(kShadowMethodNames, method, "--shadows");
+  if (size < 1 || size > 65536)
+    throw InputError("--shadow-size " + std::to_string(size) +
+                     ": expected a map size from 1 to the device's largest 2D image (16384 "
+                     "on lavapipe)");
+  settings.shadowMapSize = uint32_t(size);
+  for (auto [option, value] :
+       {std::pair{"--shadow-bias", bias}, std::pair{"--shadow-slope-bias", slopeBias},
+        std::pair{"--shadow-normal-offset", normalOffset}})
+    if (!(value >= 0.0f && value <= kMaxShadowBias)) {
+      std::ostringstream text;
+      text << option << " " << value << ": expected 0 to " << kMaxShadowBias << " texels";
+      throw InputError(text.str());
+    }
+  settings.shadowBias = {bias, slopeBias, normalOffset};
+}
+
 std::unique_ptr<Context> openContext(const GlobalOptions& global) {
   ContextOptions options;
   options.validation = global.validate;

@@ -8,8 +8,10 @@
 #include "app/commands.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
+#include "core/scene/shadows.h"
 #include "core/vulkan/context.h"
 #include "core/vulkan/depth.h"
+#include "passes/renderer.h"
 
 namespace shadelab {
 
@@ -31,6 +33,19 @@ template <typename E, size_t N>
 std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
   return what + ": " + joinNames(namesOf(table));
 }
+
+// --shadows, --shadow-size and the bias options, as render, compare, bench
+// and view take them; apply() validates what the device does not (the
+// device's limits are checked by Renderer::applyFrameSettings).
+struct ShadowOptions {
+  std::string method{nameOf(kShadowMethodNames, kDefaultShadowMethod)};
+  int64_t size = kDefaultShadowMapSize;
+  float bias = ShadowBias{}.constant;
+  float slopeBias = ShadowBias{}.slope;
+  float normalOffset = ShadowBias{}.normalOffset;
+  void add(CLI::App* command);
+  void apply(FrameSettings& settings) const;  // throws InputError naming the option
+};
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.

@@ -39,6 +39,7 @@ struct RenderOptions {
   std::string metric = "flip";
   std::string reference = "trace";
   std::string benchFolder;  // cached bench results; empty: a quick sweep
+  ShadowOptions shadows;
 };
 
 TextureOptions parseTextureOptions(const RenderOptions& options) {
@@ -121,6 +122,10 @@ void printTimings(const RenderStats& stats) {
       "wall median %.3f ms, mean %.3f ms, p95 %.3f ms\n",
       device.size(), warmup, median(device), percentile(device, 95.0), median(wall), mean(wall),
       percentile(wall, 95.0));
+  std::vector<double> shadow(stats.shadowMs.begin() + long(warmup), stats.shadowMs.end());
+  if (median(shadow) > 0.0)
+    std::printf("shadow maps: device median %.3f ms of the frame (%u caster draws)\n",
+                median(shadow), stats.shadowDraws);
 }
 
 float parseTessellationFactor(const std::string& text) {
@@ -142,6 +147,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
   const Reference& reference = findReference(options.reference, "--reference");
   TextureOptions textures = parseTextureOptions(options);
+  FrameSettings shadowSettings;
+  options.shadows.apply(shadowSettings);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   ViewSize view{scene.camera, size.width, size.height};
@@ -181,6 +188,9 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.depth = depth;
     settings.environment = environment;
     settings.textures = textures;
+    settings.shadows = shadowSettings.shadows;
+    settings.shadowBias = shadowSettings.shadowBias;
+    settings.shadowMapSize = shadowSettings.shadowMapSize;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -258,6 +268,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
           "--depth", options->depth,
           namedHelp("Depth buffer (reversed: D32_SFLOAT, near -> 1, far -> 0)", kDepthModeNames))
       ->capture_default_str();
+  options->shadows.add(command);
   CLI::Option* quality =
       command
           ->add_option("--quality", options->quality,

@@ -24,6 +24,7 @@ struct ViewOptions {
   uint32_t msaa = 1;
   std::string depth = "d32f";
   bool keyLatency = false;
+  ShadowOptions shadows;
 };
 
 int runView(const ViewOptions& options, const GlobalOptions& global) {
@@ -34,6 +35,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.initial.shadingModel = parseNamed(kShadingModelNames, options.mode, "--mode");
   viewer.initial.msaaSamples = options.msaa;
   viewer.initial.depth = parseNamed(kDepthModeNames, options.depth, "--depth");
+  options.shadows.apply(viewer.initial);
   viewer.tessellation = options.tessellation;
   viewer.logKeyLatency = options.keyLatency;
   if (!options.script.empty())
@@ -89,6 +91,7 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::IsMember({1u, 4u}));
   command->add_option("--depth", options->depth, namedHelp("Depth buffer", kDepthModeNames))
       ->capture_default_str();
+  options->shadows.add(command);
   command->add_flag("--key-latency", options->keyLatency,
                     "Print, per key, the milliseconds from handling it to the next frame's "
                     "present and to that frame's end on the device");
