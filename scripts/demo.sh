@@ -17,5 +17,5 @@ done
 # Speed against accuracy: few frames and one round keep the demo short (about
 # half a minute on 2 cores); without them bench measures 60 frames x 2 rounds.
 "$bin" bench -o out/bench --size 640x360 --frames 12 --rounds 1
-"$bin" bench zfight -o out/zfight
+"$bin" study zfight -o out/zfight
 echo "demo: images written to out/"

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -169,6 +170,12 @@ TEST_F(Cli, HelpSucceedsForEachCommand) {
   }
 }
 
+TEST_F(Cli, VersionPrintsTheProjectVersion) {
+  CommandResult r = run("--version");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output, "shadelab " SHADELAB_VERSION "\n");
+}
+
 std::string readText(const std::string& path) {
   std::ifstream file(path);
   return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
@@ -211,6 +218,77 @@ TEST_F(Cli, ScenesPrintUnknownNameIsAnInputError) {
   EXPECT_NE(r.output.find("unknown built-in scene 'no-such-scene'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("bump, default, dense"), std::string::npos) << "lists the names";
   EXPECT_EQ(r.output.find('{'), std::string::npos) << "no JSON printed";
+}
+
+// --eye/--at/--up/--fovy draw exactly what a scene file with that camera draws.
+TEST_F(Cli, CameraOptionsRenderLikeTheSameCameraInTheSceneFile) {
+  std::string text = readText(std::string(SHADELAB_ASSET_DIR) + "/scenes/default.json");
+  std::string camera =
+      R"("camera": {"eye": [2.5, 4, 6], "at": [0, 0.5, -0.25], "up": [0.1, 1, 0], "fovy": 30})";
+  text = std::regex_replace(text, std::regex(R"("camera": \{[^}]*\})"), camera);
+  ASSERT_NE(text.find(camera), std::string::npos);
+  std::ofstream(out("camera.json")) << text;
+  for (const auto& [arguments, png] :
+       {std::pair<std::string, std::string>{out("camera.json"), "file.png"},
+        {"default --eye 2.5,4,6 --at 0,0.5,-0.25 --up 0.1,1,0 --fovy 30", "options.png"},
+        {"default", "scene.png"},
+        {"default --eye 2.5,4,6 --at 0,0.5,-0.25 --up 0.1,1,0 --fovy 30 --ortho", "ortho.png"}}) {
+    CommandResult r = run("render " + arguments + " --size 160x90 -o " + out(png));
+    ASSERT_EQ(r.exitCode, 0) << arguments << "\n" << r.output;
+  }
+  shadelab::ImageU8 file = shadelab::readImageU8(out("file.png"));
+  EXPECT_TRUE(shadelab::readImageU8(out("options.png")).pixels == file.pixels);
+  EXPECT_FALSE(shadelab::readImageU8(out("scene.png")).pixels == file.pixels) << "options moved it";
+  EXPECT_FALSE(shadelab::readImageU8(out("ortho.png")).pixels == file.pixels)
+      << "--ortho changed it";
+}
+
+TEST_F(Cli, BadCameraOptionsNameTheOption) {
+  for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--eye 1,2", "--eye '1,2': expected three finite numbers X,Y,Z"},
+           {"--at 0,0,nan", "--at '0,0,nan': expected three finite numbers X,Y,Z"},
+           {"--eye 0,1,2 --at 0,1,2", "--at: at equals eye, so there is no viewing direction"},
+           {"--up 0,0,0", "--up: zero-length up vector"},
+           {"--eye 0,5,0 --at 0,0,0", "--up: up is parallel to the viewing direction"},
+           {"--fovy 180", "--fovy 180: expected degrees greater than 0 and less than 180"},
+           {out("ortho.json") + " --fovy 30",
+            "--fovy: the scene's camera is not a perspective camera"}}) {
+    std::ofstream(out("ortho.json")) << R"({"camera": {"projection": "orthographic"}, "objects": [
+        {"shape": "sphere", "material": {"kd": [1, 1, 1]}}]})";
+    std::string scene = arguments.rfind(out("ortho.json"), 0) == 0 ? "" : "default ";
+    CommandResult r = run("render " + scene + arguments + " -o " + out("camera-bad.png"));
+    EXPECT_EQ(r.exitCode, 2) << arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << arguments << "\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out("camera-bad.png"))) << arguments;
+  }
+}
+
+TEST_F(Cli, TraceBouncesIsNotRendersDepth) {
+  CommandResult r = run("trace spheres --bounces 0 --spp 1 --size 32x18 -o " + out("t.png"));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("1 spp, 0 bounces"), std::string::npos) << r.output;
+  CommandResult old = run("trace spheres --depth 3 --size 32x18 -o " + out("t2.png"));
+  EXPECT_EQ(old.exitCode, 2) << "trace's --depth is now --bounces\n" << old.output;
+  EXPECT_FALSE(std::filesystem::exists(out("t2.png")));
+}
+
+TEST_F(Cli, ScenesWithoutLightsOrWithMirrorsAndNoEnvironmentWarn) {
+  std::ofstream(out("dark.json")) << R"({"objects": [{"shape": "sphere"}]})";
+  std::ofstream(out("mirror.json"))
+      << R"({"lights": [{"type": "point", "position": [0, 3, 3]}], "objects": [
+        {"name": "ball", "shape": "sphere", "material": {"reflectivity": 0.9}}]})";
+  CommandResult dark = run("render " + out("dark.json") + " --size 32x18 -o " + out("d.png"));
+  EXPECT_EQ(dark.exitCode, 0) << dark.output;
+  EXPECT_NE(dark.output.find("shadelab: warning: scene 'dark' has no lights"), std::string::npos)
+      << dark.output;
+  CommandResult mirror = run("render " + out("mirror.json") + " --size 32x18 -o " + out("m.png"));
+  EXPECT_EQ(mirror.exitCode, 0) << mirror.output;
+  EXPECT_NE(mirror.output.find("1 reflective or transparent object(s) (first: 'ball') in a scene "
+                               "without an environment"),
+            std::string::npos)
+      << mirror.output;
+  CommandResult lit = run("render default --size 32x18 -o " + out("l.png"));
+  EXPECT_EQ(lit.output.find("warning"), std::string::npos) << lit.output;
 }
 
 TEST_F(Cli, RenderLoadsJsonSceneFile) {
@@ -257,6 +335,7 @@ TEST_F(Cli, BadSwitchValuesGetOneMessage) {
        {"render env -o " + out("a.png") + " --env maybe",
         "render bump -o " + out("a.png") + " --bump maybe",
         "trace -o " + out("a.png") + " --size 8x8 --shadows maybe",
+        "trace -o " + out("a.png") + " --size 8x8 --fresnel maybe",
         "compare -o " + out("a.png") + " --size 8x8 --reference-shadows maybe"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 2) << command << "\n" << r.output;
@@ -301,6 +380,21 @@ TEST_F(Cli, BadShadowFieldsInASceneFile) {
   EXPECT_NE(r.output.find("lights[0].shadows: expected true or false"), std::string::npos)
       << r.output;
   EXPECT_FALSE(fs::exists(out("a.png")));
+}
+
+TEST_F(Cli, TraceEpsilonIsValidated) {
+  for (std::string value : {"-1", "2", "nan", "inf", "abc", "1e-4x"}) {
+    CommandResult r = run("trace -o " + out("a.png") + " --size 8x8 --epsilon " + value);
+    EXPECT_EQ(r.exitCode, 2) << value << "\n" << r.output;
+    EXPECT_NE(r.output.find("expected a number from 0 to 1"), std::string::npos) << value << "\n"
+                                                                                 << r.output;
+    EXPECT_EQ(filesLeft(), 0u) << value;
+  }
+  // Epsilon 0 brings shadow acne back: the image differs from the default's.
+  ASSERT_EQ(run("trace whitted -o " + out("e0.png") + " --size 32x18 --spp 1 --epsilon 0").exitCode,
+            0);
+  ASSERT_EQ(run("trace whitted -o " + out("e.png") + " --size 32x18 --spp 1").exitCode, 0);
+  EXPECT_NE(readText(out("e0.png")), readText(out("e.png")));
 }
 
 TEST_F(Cli, TessellationOutOfRangeIsAUsageError) {
@@ -531,24 +625,100 @@ void expectDrawnChart(const std::string& path) {
   EXPECT_GT(colours.size(), 8u) << path;
 }
 
-TEST_F(Cli, BenchZfightWritesTableCsvAndChart) {
-  CommandResult r = run("bench zfight -o " + out("z") + " --size 160x90 --near 0.01,10");
+TEST_F(Cli, StudyZfightWritesTablesCsvsChartsAndImages) {
+  CommandResult r = run("study zfight -o " + out("z") + " --size 160x90");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  auto rows = csvRows(readText(out("z/zfight.csv")));
-  ASSERT_EQ(rows.size(), 1u + 2 * 4 * 2) << "header + projections x depth modes x near planes";
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"projection", "depth", "format", "near", "far",
-                                               "gap", "width", "height", "covered_pixels",
-                                               "wrong_pixels", "wrong_fraction"}));
-  EXPECT_EQ(rows[1][0], "perspective");
-  EXPECT_EQ(rows[1][1], "d16");
-  EXPECT_EQ(rows[1][2], "D16_UNORM");
-  EXPECT_EQ(rows[16][0], "orthographic");
-  EXPECT_EQ(rows[16][1], "reversed");
-  auto [width, height] = pngSize(out("z/zfight.png"));
-  EXPECT_GT(width, 1000u);
-  EXPECT_GT(height, 300u);
-  expectDrawnChart(out("z/zfight.png"));
+  for (const char* sweep : {"near", "distance"}) {
+    std::string csv = out("z/zfight_" + std::string(sweep) + ".csv");
+    auto rows = csvRows(readText(csv));
+    ASSERT_EQ(rows.size(), 1u + 2 * 4 * 5) << "header + projections x depth modes x 5 values";
+    EXPECT_EQ(rows[0], (std::vector<std::string>{
+                           "projection", "depth", "format", "near", "far", "distance", "gap",
+                           "width", "height", "covered_pixels", "wrong_pixels", "wrong_fraction"}));
+    EXPECT_EQ(rows[1][0], "perspective");
+    EXPECT_EQ(rows[1][1], "d16");
+    EXPECT_EQ(rows[1][2], "D16_UNORM");
+    EXPECT_EQ(rows[40][0], "orthographic");
+    EXPECT_EQ(rows[40][1], "reversed");
+    std::string chart = out("z/zfight_" + std::string(sweep) + ".png");
+    auto [width, height] = pngSize(chart);
+    EXPECT_GT(width, 1000u);
+    EXPECT_GT(height, 300u);
+    expectDrawnChart(chart);
+  }
+  EXPECT_EQ(pngSize(out("z/d16_perspective_distance29.png")), std::make_pair(160u, 90u));
   EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
+}
+
+// The CPU studies open no device and write their CSV, chart and traces.
+TEST_F(Cli, StudyAcneAndTirWriteCsvChartAndImages) {
+  CommandResult acne = run("study acne -o " + out("acne") + " --size 80x45");
+  ASSERT_EQ(acne.exitCode, 0) << acne.output;
+  auto rows = csvRows(readText(out("acne/acne.csv")));
+  ASSERT_EQ(rows.size(), 1u + 9) << "header + 9 epsilons";
+  EXPECT_EQ(rows[0][0], "epsilon");
+  EXPECT_EQ(rows[1][0], "0");
+  expectDrawnChart(out("acne/acne.png"));
+  EXPECT_EQ(pngSize(out("acne/trace_epsilon_0.png")), std::make_pair(80u, 45u));
+  CommandResult tir = run("study tir -o " + out("tir") + " --size 32x32");
+  ASSERT_EQ(tir.exitCode, 0) << tir.output;
+  rows = csvRows(readText(out("tir/tir.csv")));
+  ASSERT_EQ(rows.size(), 1u + 5 * 180) << "header + 5 iors x 180 angles";
+  EXPECT_EQ(rows[0][5], "total_internal_reflection");
+  expectDrawnChart(out("tir/tir.png"));
+  EXPECT_EQ(pngSize(out("tir/snells_window_ior1.5.png")), std::make_pair(32u, 32u));
+  EXPECT_NE(tir.output.find("asin(1/ior)"), std::string::npos) << tir.output;
+}
+
+TEST_F(Cli, StudyGouraudHighlightWritesCsvChartAndImages) {
+  CommandResult r = run("study gouraud-highlight -o " + out("gh") + " --size 64x36");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("gh/gouraud-highlight.csv")));
+  ASSERT_EQ(rows.size(), 1u + 8) << "header + 8 subdivisions";
+  EXPECT_EQ(rows[1][1], "2");
+  expectDrawnChart(out("gh/gouraud-highlight.png"));
+  EXPECT_EQ(pngSize(out("gh/gouraud_8x8.png")), std::make_pair(64u, 36u));
+}
+
+TEST_F(Cli, StudyEnvVsTraceWritesCsvChartAndImages) {
+  CommandResult r = run("study env-vs-trace -o " + out("evt") + " --size 96x54");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("evt/env-vs-trace.csv")));
+  ASSERT_EQ(rows.size(), 1u + 4) << "header + 4 shading models";
+  EXPECT_EQ(rows[0][4], "flip_hits_object");
+  EXPECT_EQ(rows[3][0], "phong");
+  expectDrawnChart(out("evt/env-vs-trace.png"));
+  for (const char* image : {"evt/trace.png", "evt/regions.png", "evt/phong.png"})
+    EXPECT_EQ(pngSize(out(image)), std::make_pair(96u, 54u)) << image;
+}
+
+TEST_F(Cli, StudyBumpSilhouetteWritesCsvChartAndImages) {
+  CommandResult r = run("study bump-silhouette -o " + out("bs") + " --size 64x48");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("bs/bump-silhouette.csv")));
+  ASSERT_EQ(rows.size(), 1u + 5) << "header + 5 tessellations";
+  EXPECT_EQ(rows[0][7], "silhouette_difference");
+  expectDrawnChart(out("bs/bump-silhouette.png"));
+  EXPECT_EQ(pngSize(out("bs/displaced_1024.png")), std::make_pair(64u, 48u));
+}
+
+TEST_F(Cli, StudyWithoutNameListsTheStudies) {
+  CommandResult r = run("study");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* name :
+       {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace", "bump-silhouette"})
+    EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, StudyRefusesAnUnknownNameAndWritesNothing) {
+  CommandResult r = run("study nosuch -o " + out("s"));
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("study 'nosuch': expected one of zfight"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out("s")));
+  r = run("study zfight -o " + out("s") + " --size 0x9");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("--size '0x9'"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out("s")));
 }
 
 const std::vector<std::string> kBenchColumns = {"scene",         "width",

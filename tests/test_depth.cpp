@@ -2,6 +2,7 @@
 // fraction of their pixels where the farther one wins, per depth mode,
 // projection and near plane. Figures are printed so a failing run shows how
 // far off it was (figures below measured at 320x180 on lavapipe).
+#include <algorithm>
 #include <cstdio>
 
 #include "core/vulkan/depth.h"
@@ -75,6 +76,31 @@ TEST_F(DepthPrecision, OrthographicPrecisionIgnoresTheNearPlane) {
   EXPECT_LT(std::abs(atSmallNear - atLargeNear), 0.1);
   for (DepthMode depth : {DepthMode::D24, DepthMode::D32F, DepthMode::ReversedZ})
     EXPECT_LT(measure(renderer(), depth, Projection::Orthographic, 0.001f).wrongFraction(), 0.001);
+}
+
+// The seed's claim, measured by moving the planes away (study zfight's
+// distance sweep, near plane 1): in perspective D16 loses more of the planes
+// the farther they are, since depth steps grow with z^2 / near; in
+// orthographic the steps are (far - near) / 2^16 at any distance, so the
+// loss stays in a band.
+TEST_F(DepthPrecision, PerspectiveZFightingGrowsWithDistanceOrthographicDoesNot) {
+  std::vector<double> perspective, orthographic;
+  for (float scale : {0.25f, 0.5f, 1.0f, 2.0f, 4.0f}) {
+    perspective.push_back(measureZFight(renderer(), DepthMode::D16, Projection::Perspective, 1.0f,
+                                        kWidth, kHeight, scale)
+                              .wrongFraction());
+    orthographic.push_back(measureZFight(renderer(), DepthMode::D16, Projection::Orthographic, 1.0f,
+                                         kWidth, kHeight, scale)
+                               .wrongFraction());
+    std::printf("distance %.1f: perspective %.2f%%, orthographic %.2f%%\n", zfightDistance(scale),
+                100.0 * perspective.back(), 100.0 * orthographic.back());
+  }
+  for (size_t i = 1; i < perspective.size(); ++i)
+    EXPECT_GE(perspective[i], perspective[i - 1]) << "step " << i;
+  EXPECT_GT(perspective.back() - perspective.front(), 0.5);
+  auto [low, high] = std::minmax_element(orthographic.begin(), orthographic.end());
+  EXPECT_GT(*low, 0.2) << "D16 in orthographic fights at every distance";
+  EXPECT_LT(*high - *low, 0.1);
 }
 
 // Where precision is ample every depth mode draws the same image.

@@ -128,13 +128,22 @@ TEST(RayTracer, RotatedScaledBoxIsIntersectedInObjectSpace) {
   EXPECT_FALSE(tracer.intersect({{0.6f, 0.1f, 5}, {0, 0, -1}}, 0.0f, kInf).has_value());
 }
 
-// Shadow rays pass transparent surfaces dimmed by kt at each crossing.
+// Shadow rays pass transparent surfaces dimmed at each crossing by kt (1 - F),
+// Schlick's F at the ray's angle from air: head-on F0 = (0.5 / 2.5)^2 = 0.04
+// for ior 1.5; by kt alone without Fresnel.
 TEST(RayTracer, GlassCastsALighterShadowThanAnOpaqueBall) {
   ShapeDesc sphere{ShapeKind::UvSphere};
   Scene scene = oneObject(sphere, glm::mat4(1.0f));
   const Ray throughBall{{0, -5, 0}, {0, 1, 0}};
   scene.objects[0].material.transparency = 0.5f;
-  EXPECT_FLOAT_EQ(RayTracer(scene).transmittance(throughBall, kInf), 0.25f);  // in and out
+  scene.objects[0].material.ior = 1.5f;
+  EXPECT_FLOAT_EQ(RayTracer(scene).transmittance(throughBall, kInf, false), 0.25f);  // in, out
+  EXPECT_NEAR(RayTracer(scene).transmittance(throughBall, kInf), 0.25f * 0.96f * 0.96f, 1e-6f);
+  // Off centre the ray meets the ball at 60 degrees both times: cos 0.5.
+  const Ray offCentre{{std::sqrt(0.75f), -5, 0}, {0, 1, 0}};
+  const float fresnel60 = 0.04f + 0.96f * std::pow(0.5f, 5.0f);
+  EXPECT_NEAR(RayTracer(scene).transmittance(offCentre, kInf),
+              0.25f * (1.0f - fresnel60) * (1.0f - fresnel60), 1e-5f);
   scene.objects[0].material.transparency = 0.0f;
   EXPECT_EQ(RayTracer(scene).transmittance(throughBall, kInf), 0.0f);
   EXPECT_EQ(RayTracer(scene).transmittance(throughBall, 3.5f), 1.0f);  // ends before the ball

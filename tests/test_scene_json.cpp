@@ -133,6 +133,39 @@ TEST(SceneJson, FullSceneCameraEnvironmentAndLights) {
   EXPECT_TRUE(vec3Near(scene.lights[1].intensity, glm::vec3(0.5f)));
 }
 
+// The viewer's screenshot sidecar writes the camera as the format's "camera"
+// object: read back, it is the same camera, float for float.
+TEST(SceneJson, CameraJsonReadsBackToTheSameCamera) {
+  Camera perspectiveCamera;
+  perspectiveCamera.eye = {0.1f, 2.0f / 3.0f, -7.25f};
+  perspectiveCamera.at = {1e-3f, 0.5f, 3.0f};
+  perspectiveCamera.up = {0.0f, 1.0f, 0.1f};
+  perspectiveCamera.fovyDegrees = 33.3f;
+  perspectiveCamera.far = 250.0f;
+  Camera orthographicCamera = perspectiveCamera;
+  orthographicCamera.projection = Projection::Orthographic;
+  orthographicCamera.left = -4.5f;
+  orthographicCamera.right = 4.5f;
+  orthographicCamera.bottom = -2.53125f;
+  orthographicCamera.top = 2.53125f;
+  for (const Camera& camera : {perspectiveCamera, orthographicCamera}) {
+    Scene scene = parseSceneJson(R"({"camera": )" + cameraJson(camera) + R"(, "objects": []})",
+                                 "camera.json");
+    EXPECT_EQ(scene.camera.eye, camera.eye);
+    EXPECT_EQ(scene.camera.at, camera.at);
+    EXPECT_EQ(scene.camera.up, camera.up);
+    EXPECT_EQ(scene.camera.projection, camera.projection);
+    EXPECT_EQ(scene.camera.near, camera.near);
+    EXPECT_EQ(scene.camera.far, camera.far);
+    if (camera.projection == Projection::Perspective) {
+      EXPECT_EQ(scene.camera.fovyDegrees, camera.fovyDegrees);
+    } else {
+      EXPECT_EQ(scene.camera.left, camera.left);
+      EXPECT_EQ(scene.camera.top, camera.top);
+    }
+  }
+}
+
 TEST(SceneJson, FullSceneMaterialsByNameAndInline) {
   Scene scene = parse(kFullScene);
   const Material& red = objectNamed(scene, "ball").material;

@@ -14,6 +14,7 @@
 #include "core/scene/transform.h"
 #include "core/vulkan/gpu_scene.h"
 #include "gpu_test_support.h"
+#include "measure/highlight.h"
 
 namespace shadelab::test {
 namespace {
@@ -24,17 +25,6 @@ using ShadingStability = GpuTest;
 
 const ShadingModel kLitModels[] = {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
                                    ShadingModel::BlinnPhong};
-
-float luminance(glm::vec4 c) {
-  return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
-
-float peakLuminance(const ImageRgba& image) {
-  float peak = 0.0f;
-  for (uint32_t y = 0; y < image.height; ++y)
-    for (uint32_t x = 0; x < image.width; ++x) peak = std::max(peak, luminance(image.at(x, y)));
-  return peak;
-}
 
 float largestChannelError(glm::vec3 a, glm::vec3 b) {
   glm::vec3 d = glm::abs(a - b);
@@ -183,13 +173,11 @@ INSTANTIATE_TEST_SUITE_P(LitModels, EquationAgreement, ::testing::ValuesIn(kLitM
 // Gouraud evaluates the equation only at the vertices, so a highlight inside
 // one large triangle is lost; subdividing the plane brings it back.
 TEST_F(ShadingStability, GouraudLosesTheHighlightUntilThePlaneIsSubdivided) {
-  RenderSettings phong{320, 180, ShadingModel::Phong};
-  RenderSettings gouraud{320, 180, ShadingModel::Gouraud};
-  float phongPeak = peakLuminance(renderer().renderToImage(highlightScene(1), phong).image);
+  float phongPeak = measureHighlight(renderer(), 1, 320, 180).phongPeak;
   uint32_t recovered = 0;
   for (uint32_t quads : {1u, 2u, 4u, 8u, 16u, 32u, 64u}) {
-    float peak = peakLuminance(renderer().renderToImage(highlightScene(quads), gouraud).image);
-    float phongHere = peakLuminance(renderer().renderToImage(highlightScene(quads), phong).image);
+    HighlightMeasurement m = measureHighlight(renderer(), quads, 320, 180);
+    float peak = m.gouraudPeak, phongHere = m.phongPeak;
     std::printf("highlight %2ux%-2u quads: Gouraud peak %.3f, Phong peak %.3f (%.0f%%)\n", quads,
                 quads, peak, phongHere, 100.0f * peak / phongHere);
     // Phong does not depend on the tessellation of a plane.

@@ -102,6 +102,30 @@ TEST_F(Viewer, OrbitPanAndZoomMatchHeadlessRenderOfTheMovedCamera) {
   EXPECT_FALSE(matchesImage(headless(scene, ShadingModel::Phong), shot));  // it did move
 }
 
+// A view found by hand renders headless: V prints the camera as options, the
+// screenshot's sidecar JSON holds the same line, and `render` with it draws
+// what the window showed.
+TEST_F(Viewer, PrintedCameraRendersTheSameViewHeadless) {
+  CommandResult r =
+      view("key O\ndrag 100 100 170 70\nscroll 2\nkey V\nframes 2\nscreenshot found.png\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(r.output, match, std::regex("camera: (--eye [^\n]*)\n")))
+      << r.output;
+  std::string line = match[1];
+  std::ifstream sidecar(path("found.json"));
+  std::string json((std::istreambuf_iterator<char>(sidecar)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"options\": \"" + line + "\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"scene\": \"default\""), std::string::npos) << json;
+  CommandResult rendered =
+      run("render default " + line + " --size 320x180 -o " + path("headless.png"));
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.output;
+  ImageU8 shot = readImageU8(path("found.png"));
+  EXPECT_TRUE(matchesImage(readImageU8(path("headless.png")), shot));
+  // Must-fail twin: the unmoved camera's render is not what the window showed.
+  EXPECT_FALSE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong), shot));
+}
+
 TEST_F(Viewer, ZeroKeyPutsTheCameraBack) {
   CommandResult r =
       view("key O\ndrag 100 100 160 80\nscroll 3\nkey 0\nframes 2\nscreenshot back.png\n");
@@ -165,6 +189,25 @@ TEST_F(Viewer, AutoTessellationMatchesHeadlessTessAuto) {
   tessellateForView(scene, ViewSize{scene.camera, kWidth, kHeight}, 0.5f);
   ImageU8 shot = readImageU8(path("auto.png"));
   EXPECT_TRUE(matchesImage(headless(scene, ShadingModel::Phong), shot));
+}
+
+// view takes the render options it can honour: --tess auto, --env, --filter,
+// --bump, --mip-tint start the viewer where the keys would take it.
+TEST_F(Viewer, RenderOptionsSetTheInitialState) {
+  CommandResult r = view("key O\nframes 2\nscreenshot start.png\n",
+                         "mip-plane --tess auto --filter nearest --mip-tint --bump off --env off");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  Scene scene = builtinScene("mip-plane");
+  tessellateForView(scene, ViewSize{scene.camera, kWidth, kHeight}, 0.5f);
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
+  settings.textures.filterOverride = TextureFilter::Nearest;
+  settings.textures.mipTint = true;
+  settings.textures.bump = false;
+  settings.environment = false;
+  ImageU8 shot = readImageU8(path("start.png"));
+  EXPECT_TRUE(matchesImage(render(scene, settings), shot));
+  settings.textures.mipTint = false;  // must-fail twin: the options did change the image
+  EXPECT_FALSE(matchesImage(render(scene, settings), shot));
 }
 
 TEST_F(Viewer, TextureKeysMatchHeadlessRendersWithTheSameOptions) {

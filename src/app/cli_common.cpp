@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 
 namespace shadelab {
 
@@ -33,43 +34,23 @@ std::vector<ShadingModel> parseShadingModelList(const std::string& text,
   return models;
 }
 
-void ShadowOptions::add(CLI::App* command) {
-  command
-      ->add_option("--shadows", method,
-                   namedHelp("Shadow maps and their filter (off: no shadows)", kShadowMethodNames))
-      ->capture_default_str();
-  command->add_option("--shadow-size", size, "Shadow map size in texels (square)")
-      ->capture_default_str();
-  command
-      ->add_option("--shadow-bias", bias,
-                   "Constant shadow bias towards the light, in shadow-map texels (0..64)")
-      ->capture_default_str();
-  command
-      ->add_option("--shadow-slope-bias", slopeBias,
-                   "Slope-scaled shadow bias: texels times tan(angle of N and L) (0..64)")
-      ->capture_default_str();
-  command
-      ->add_option("--shadow-normal-offset", normalOffset,
-                   "Normal-offset shadow bias: texels along the normal times sin(angle) (0..64)")
-      ->capture_default_str();
+void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (fs::is_directory(folder, error)) {
+    checkWritableFolder(folder / firstFile);
+    return;
+  }
+  if (fs::exists(folder, error))
+    throw InputError("output '" + folder.string() + "' exists and is not a folder");
+  checkWritableFolder(folder);  // the parent
+  if (!fs::create_directory(folder, error))
+    throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
 }
 
-void ShadowOptions::apply(FrameSettings& settings) const {
-  settings.shadows = parseNamed(kShadowMethodNames, method, "--shadows");
-  if (size < 1 || size > 65536)
-    throw InputError("--shadow-size " + std::to_string(size) +
-                     ": expected a map size from 1 to the device's largest 2D image (16384 "
-                     "on lavapipe)");
-  settings.shadowMapSize = uint32_t(size);
-  for (auto [option, value] :
-       {std::pair{"--shadow-bias", bias}, std::pair{"--shadow-slope-bias", slopeBias},
-        std::pair{"--shadow-normal-offset", normalOffset}})
-    if (!(value >= 0.0f && value <= kMaxShadowBias)) {
-      std::ostringstream text;
-      text << option << " " << value << ": expected 0 to " << kMaxShadowBias << " texels";
-      throw InputError(text.str());
-    }
-  settings.shadowBias = {bias, slopeBias, normalOffset};
+void printSceneWarnings(const Scene& scene, bool rasteriser) {
+  for (const std::string& warning : sceneWarnings(scene, rasteriser))
+    std::fprintf(stderr, "shadelab: warning: %s\n", warning.c_str());
 }
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global) {

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the subcommands: option parsing that reports bad values
 // as InputError, and the Vulkan context every command opens the same way.
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,10 +9,8 @@
 #include "app/commands.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
-#include "core/scene/shadows.h"
 #include "core/vulkan/context.h"
 #include "core/vulkan/depth.h"
-#include "passes/renderer.h"
 
 namespace shadelab {
 
@@ -34,18 +33,12 @@ std::string namedHelp(const std::string& what, const NameTable<E, N>& table) {
   return what + ": " + joinNames(namesOf(table));
 }
 
-// --shadows, --shadow-size and the bias options, as render, compare, bench
-// and view take them; apply() validates what the device does not (the
-// device's limits are checked by Renderer::applyFrameSettings).
-struct ShadowOptions {
-  std::string method{nameOf(kShadowMethodNames, kDefaultShadowMethod)};
-  int64_t size = kDefaultShadowMapSize;
-  float bias = ShadowBias{}.constant;
-  float slopeBias = ShadowBias{}.slope;
-  float normalOffset = ShadowBias{}.normalOffset;
-  void add(CLI::App* command);
-  void apply(FrameSettings& settings) const;  // throws InputError naming the option
-};
+// Creates the output folder DIR if needed (its parent must exist) and checks
+// that `firstFile` can be written in it; throws InputError naming it.
+void prepareOutputFolder(const std::filesystem::path& folder, const std::string& firstFile);
+
+// Prints sceneWarnings (scene.h) to stderr as "shadelab: warning: ...".
+void printSceneWarnings(const Scene& scene, bool rasteriser);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command: with validation on, any message turns success into exit 1.

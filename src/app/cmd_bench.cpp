@@ -3,8 +3,7 @@
 // setting's memory and error against a reference; printed as a table with
 // each mode's cost against the constant-colour floor (unlit), written to
 // DIR/results.csv and charted (error against time with the Pareto front,
-// error against triangles). `--sweep depth` (the default for the zfight
-// scene) measures z-fighting per depth mode instead.
+// error against triangles).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -20,7 +19,6 @@
 #include "core/scene/texture.h"
 #include "measure/bench_charts.h"
 #include "measure/benchmark.h"
-#include "measure/zfight.h"
 
 namespace shadelab {
 namespace {
@@ -38,24 +36,7 @@ struct BenchCommandOptions {
   std::string filters = "material";
   uint32_t frames = 60;
   uint32_t rounds = 2;
-  std::string sweep;  // "settings" or "depth"; empty: depth for the zfight scene
-  std::vector<float> nearPlanes{0.001f, 0.01f, 0.1f, 1.0f, 10.0f};
-  bool sizeGiven = false;
 };
-
-// Creates DIR if needed (its parent must exist); throws InputError naming it.
-void prepareOutputFolder(const fs::path& folder) {
-  std::error_code error;
-  if (fs::is_directory(folder, error)) {
-    checkWritableFolder(folder / "results.csv");
-    return;
-  }
-  if (fs::exists(folder, error))
-    throw InputError("output '" + folder.string() + "' exists and is not a folder");
-  checkWritableFolder(folder);  // the parent
-  if (!fs::create_directory(folder, error))
-    throw InputError("cannot create output folder '" + folder.string() + "': " + error.message());
-}
 
 // "material,nearest" -> {none, Nearest}; throws InputError naming a bad entry.
 std::vector<std::optional<TextureFilter>> parseFilterList(const std::string& text) {
@@ -109,52 +90,7 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
       metric.name.c_str());
 }
 
-// The depth sweep: z-fighting per depth mode, projection and near plane.
-int runDepthSweep(const BenchCommandOptions& options, const GlobalOptions& global) {
-  if (!options.scene.empty() && options.scene != "zfight")
-    throw InputError("--sweep depth: measures the built-in zfight scene, not '" + options.scene +
-                     "'");
-  Size size = parseSize(options.sizeGiven ? options.size : "640x360", "--size");
-  prepareOutputFolder(options.output);
-  std::unique_ptr<Context> context = openContext(global);
-  std::vector<ZFightMeasurement> results;
-  {
-    Renderer renderer(*context);
-    std::fprintf(stderr, "bench zfight: %zu near planes x 4 depth modes x 2 projections at %ux%u\n",
-                 options.nearPlanes.size(), size.width, size.height);
-    results = runZFightSweep(
-        renderer, options.nearPlanes, size.width, size.height,
-        [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
-  }
-  fs::path csv = fs::path(options.output) / "zfight.csv";
-  fs::path chart = fs::path(options.output) / "zfight.png";
-  writeTextFile(csv, zfightCsv(results, size.width, size.height));
-  writeImage(zfightChart(results), chart);
-
-  std::printf("pixels where the farther plane wins (%%), planes %g apart\n", kZFightGap);
-  std::printf("%-13s %9s", "projection", "near");
-  for (DepthMode depth : valuesOf(kDepthModeNames))
-    std::printf(" %9s", std::string(depthModeName(depth)).c_str());
-  std::printf("\n");
-  for (Projection projection : {Projection::Perspective, Projection::Orthographic})
-    for (float near : options.nearPlanes) {
-      std::printf("%-13s %9g", std::string(nameOf(kProjectionNames, projection)).c_str(), near);
-      for (DepthMode depth : valuesOf(kDepthModeNames))
-        for (const ZFightMeasurement& m : results)
-          if (m.projection == projection && m.depth == depth && m.near == near)
-            std::printf(" %9.2f", 100.0 * m.wrongFraction());
-      std::printf("\n");
-    }
-  std::printf("wrote %s and %s\n", csv.c_str(), chart.c_str());
-  return finishWithValidation(*context, 0);
-}
-
 int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
-  std::string sweep =
-      options.sweep.empty() ? (options.scene == "zfight" ? "depth" : "settings") : options.sweep;
-  if (sweep == "depth") return runDepthSweep(options, global);
-  if (sweep != "settings")
-    throw InputError("--sweep '" + options.sweep + "': expected settings or depth");
   Size size = parseSize(options.size, "--size");
   BenchAxes axes{parseShadingModelList(options.modes, "--modes"), options.tessellations,
                  options.msaa, parseFilterList(options.filters)};
@@ -167,7 +103,7 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   const ErrorMetric& charted = findErrorMetric(options.metric, "--metric");
   size_t chartedIndex = size_t(&charted - errorMetrics().data());
   Scene scene = loadScene(options.scene);
-  prepareOutputFolder(options.output);
+  prepareOutputFolder(options.output, "results.csv");
   std::vector<BenchPoint> points = benchPoints(axes);
 
   std::unique_ptr<Context> context = openContext(global);
@@ -203,26 +139,14 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* command = app.add_subcommand(
       "bench",
       "Measure frame time, memory and error per shading model, tessellation and MSAA, with "
-      "charts; or z-fighting per depth mode (bench zfight)");
+      "charts (studies of one technique's failure: shadelab study)");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
   command
       ->add_option("-o,--output", options->output,
                    "Folder for results.csv and the charts (created if needed)")
       ->required();
-  command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT (depth sweep: 640x360)")
-      ->capture_default_str()
-      ->each([options](const std::string&) { options->sizeGiven = true; });
-  command->add_option("--sweep", options->sweep,
-                      "settings: shading model x tessellation x MSAA (the default); depth: "
-                      "z-fighting per depth mode, projection and near plane (the default for "
-                      "the zfight scene)");
-  command
-      ->add_option("--near", options->nearPlanes,
-                   "Depth sweep: near-plane distances, comma-separated")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   command
       ->add_option("--modes", options->modes,
                    "Shading models to measure; unlit is the constant-colour floor")

@@ -8,8 +8,10 @@
 #include <optional>
 #include <sstream>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/look_options.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/split_screen.h"
@@ -25,6 +27,7 @@ namespace shadelab {
 namespace {
 
 struct CompareOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "480x270";
@@ -98,6 +101,8 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   checkOutputPath(sheetPath);
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
+  printSceneWarnings(scene, true);
 
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;
@@ -170,6 +175,7 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* command = app.add_subcommand(
       "compare", "Shading models side by side with heatmaps and errors against a reference");
   command->add_option("scene", options->scene, "Built-in scene name or scene file");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Sheet image (.png); numbers go to .json")
       ->required();
   command->add_option("--size", options->size, "Size of each view WIDTHxHEIGHT")

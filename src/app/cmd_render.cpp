@@ -6,8 +6,10 @@
 #include <optional>
 #include <sstream>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/look_options.h"
 #include "core/base/errors.h"
 #include "core/base/image.h"
 #include "core/base/stats.h"
@@ -21,6 +23,7 @@ namespace shadelab {
 namespace {
 
 struct RenderOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "1280x720";
@@ -30,26 +33,13 @@ struct RenderOptions {
   float tessellationError = 0.5f;
   float simplify = 0.0f;
   uint32_t msaa = 1;
-  std::string environment = "on";
-  std::string filter;  // empty: each material's own sampler
-  std::string bump = "on";
-  bool mipTint = false;
+  LookOptions look;  // --env, --filter, --bump, --mip-tint
   std::string depth = "d32f";
   std::optional<double> quality;  // a bound in `metric`'s units
   std::string metric = "flip";
   std::string reference = "trace";
   std::string benchFolder;  // cached bench results; empty: a quick sweep
-  ShadowOptions shadows;
 };
-
-TextureOptions parseTextureOptions(const RenderOptions& options) {
-  TextureOptions textures;
-  if (!options.filter.empty())
-    textures.filterOverride = parseNamed(kTextureFilterNames, options.filter, "--filter");
-  textures.bump = parseNamed(kOnOffNames, options.bump, "--bump");
-  textures.mipTint = options.mipTint;
-  return textures;
-}
 
 std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
                                                   const ErrorMetric& metric, uint32_t msaa) {
@@ -128,29 +118,20 @@ void printTimings(const RenderStats& stats) {
                 median(shadow), stats.shadowDraws);
 }
 
-float parseTessellationFactor(const std::string& text) {
-  float factor = 0.0f;
-  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), factor);
-  if (error != std::errc() || end != text.data() + text.size() || !(factor >= 0.125f) ||
-      !(factor <= 16.0f))
-    throw InputError("--tess '" + text + "': expected a factor from 0.125 to 16, or auto");
-  return factor;
-}
-
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   bool autoTessellation = options.tessellation == "auto";
   float factor = autoTessellation ? 1.0f : parseTessellationFactor(options.tessellation);
   BenchPoint point{parseNamed(kShadingModelNames, options.mode, "--mode"), factor, options.msaa};
   DepthMode depth = parseNamed(kDepthModeNames, options.depth, "--depth");
-  bool environment = parseNamed(kOnOffNames, options.environment, "--env");
+  FrameSettings look;
+  applyLookOptions(options.look, look);
   const ErrorMetric& metric = findErrorMetric(options.metric, "--metric");
   const Reference& reference = findReference(options.reference, "--reference");
-  TextureOptions textures = parseTextureOptions(options);
-  FrameSettings shadowSettings;
-  options.shadows.apply(shadowSettings);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
+  printSceneWarnings(scene, true);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
   if (options.simplify > 0.0f) {
@@ -186,11 +167,11 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.frames = options.frames;
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
-    settings.environment = environment;
-    settings.textures = textures;
-    settings.shadows = shadowSettings.shadows;
-    settings.shadowBias = shadowSettings.shadowBias;
-    settings.shadowMapSize = shadowSettings.shadowMapSize;
+    settings.environment = look.environment;
+    settings.textures = look.textures;
+    settings.shadows = look.shadows;
+    settings.shadowBias = look.shadowBias;
+    settings.shadowMapSize = look.shadowMapSize;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
@@ -210,6 +191,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* command = app.add_subcommand("render", "Render a scene headless to an image file");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
@@ -245,30 +227,12 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
-  command
-      ->add_option("--env", options->environment,
-                   namedHelp("Environment mapping (reflections, refraction, skybox) when the "
-                             "scene has an environment",
-                             kOnOffNames))
-      ->capture_default_str();
-  command->add_option("--filter", options->filter,
-                      "Texture filter for every texture, overriding the materials' samplers: "
-                      "nearest (base level, no mipmaps), bilinear (nearest mip level), "
-                      "trilinear, aniso (trilinear + anisotropic; slow on llvmpipe)");
-  command
-      ->add_option("--bump", options->bump,
-                   namedHelp("Bump mapping (normal and height maps; Phong and Blinn-Phong only)",
-                             kOnOffNames))
-      ->capture_default_str();
-  command->add_flag("--mip-tint", options->mipTint,
-                    "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
-                    "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
+  addLookOptions(command, options->look);
   command
       ->add_option(
           "--depth", options->depth,
           namedHelp("Depth buffer (reversed: D32_SFLOAT, near -> 1, far -> 0)", kDepthModeNames))
       ->capture_default_str();
-  options->shadows.add(command);
   CLI::Option* quality =
       command
           ->add_option("--quality", options->quality,

@@ -2,11 +2,15 @@
 // truth `compare` measures the rasterised modes against. No Vulkan device.
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "core/base/errors.h"
 #include "core/base/image.h"
 #include "core/scene/scene_loader.h"
 #include "core/trace/raytracer.h"
@@ -15,28 +19,52 @@ namespace shadelab {
 namespace {
 
 struct TraceOptions {
+  CameraOptions camera;
   std::string scene;
   std::string output;
   std::string size = "1280x720";
   uint32_t samplesPerPixel = 16;
-  uint32_t depth = 5;
+  uint32_t bounces = 5;
   uint32_t threads = 0;
   std::string shadows = "on";
+  std::string fresnel = "on";
+  std::string epsilon;  // empty: TraceSettings' default
 };
+
+// --epsilon: a finite number of world units from 0 to 1; throws InputError.
+float parseEpsilon(const std::string& text) {
+  float value = 0.0f;
+  const char* end = text.data() + text.size();
+  auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end || !std::isfinite(value) ||
+      value < 0.0f || value > 1.0f)
+    throw InputError("--epsilon '" + text +
+                     "': expected a number from 0 to 1 (world units the new rays start off the "
+                     "surface; default " +
+                     std::to_string(TraceSettings{}.epsilon).substr(0, 6) + ")");
+  return value;
+}
 
 int runTrace(const TraceOptions& options) {
   Size size = parseSize(options.size, "--size");
   checkSamplesPerPixel(options.samplesPerPixel);
   bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
+  bool fresnel = parseNamed(kOnOffNames, options.fresnel, "--fresnel");
+  const float epsilon =
+      options.epsilon.empty() ? TraceSettings{}.epsilon : parseEpsilon(options.epsilon);
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
+  printSceneWarnings(scene, false);
   TraceSettings settings;
   settings.width = size.width;
   settings.height = size.height;
   settings.samplesPerPixel = options.samplesPerPixel;
-  settings.maxDepth = options.depth;
+  settings.maxDepth = options.bounces;
   settings.threads = options.threads;
   settings.shadows = shadows;
+  settings.fresnel = fresnel;
+  settings.epsilon = epsilon;
   // Progress on a terminal only, so logs and pipes get just the summary.
   if (isatty(STDERR_FILENO))
     settings.progress = [](float fraction) {
@@ -53,8 +81,9 @@ int runTrace(const TraceOptions& options) {
   const double buildSeconds = std::chrono::duration<double>(built - start).count();
   const double traceSeconds = std::chrono::duration<double>(done - built).count();
   const TraceStats& stats = result.stats;
-  std::printf("wrote %s (%ux%u, scene %s, %u spp, depth %u)\n", options.output.c_str(), size.width,
-              size.height, scene.name.c_str(), settings.samplesPerPixel, settings.maxDepth);
+  std::printf("wrote %s (%ux%u, scene %s, %u spp, %u bounces)\n", options.output.c_str(),
+              size.width, size.height, scene.name.c_str(), settings.samplesPerPixel,
+              settings.maxDepth);
   std::printf(
       "trace: %.3f s (+ %.3f s BVH build), %.2f Mrays/s: %llu primary, %llu shadow, "
       "%llu reflected/refracted (%llu total internal reflections)\n",
@@ -74,6 +103,7 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
       app.add_subcommand("trace", "Ray trace a scene on the CPU (Whitted): the reference image");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
@@ -84,8 +114,9 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
       ->capture_default_str()
       ->check(CLI::Range(1u, 256u));
   command
-      ->add_option("--depth", options->depth,
-                   "Reflection/refraction bounces after the primary ray (0: local shading)")
+      ->add_option("--bounces", options->bounces,
+                   "Reflection/refraction bounces after the primary ray (0: local shading); "
+                   "render's --depth is the depth buffer")
       ->capture_default_str()
       ->check(CLI::Range(0u, 64u));
   command
@@ -97,6 +128,16 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions&) {
       ->add_option("--shadows", options->shadows,
                    namedHelp("Shadow rays (off: as the rasteriser)", kOnOffNames))
       ->capture_default_str();
+  command
+      ->add_option("--fresnel", options->fresnel,
+                   namedHelp("Dielectric Fresnel (Schlick) on glass and its shadows (off: fixed "
+                             "kr and kt)",
+                             kOnOffNames))
+      ->capture_default_str();
+  command->add_option("--epsilon", options->epsilon,
+                      "Offset of new rays off the surface against self-intersection (shadow "
+                      "acne), world units 0..1, times the hit's largest coordinate above 1 "
+                      "(default 1e-4)");
   return [options] { return runTrace(*options); };
 }
 

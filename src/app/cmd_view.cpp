@@ -2,8 +2,10 @@
 #include <cstdlib>
 #include <memory>
 
+#include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/look_options.h"
 #include "core/scene/scene_loader.h"
 #include "view/viewer.h"
 
@@ -15,16 +17,17 @@ namespace shadelab {
 namespace {
 
 struct ViewOptions {
+  CameraOptions camera;
   std::string scene;
   std::string size = "1280x720";
   std::string present = "fifo";
   std::string script;
   std::string mode = "phong";
-  float tessellation = 1.0f;
+  std::string tessellation = "1";
+  LookOptions look;  // --env, --filter, --bump, --mip-tint
   uint32_t msaa = 1;
   std::string depth = "d32f";
   bool keyLatency = false;
-  ShadowOptions shadows;
 };
 
 int runView(const ViewOptions& options, const GlobalOptions& global) {
@@ -35,14 +38,17 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.initial.shadingModel = parseNamed(kShadingModelNames, options.mode, "--mode");
   viewer.initial.msaaSamples = options.msaa;
   viewer.initial.depth = parseNamed(kDepthModeNames, options.depth, "--depth");
-  options.shadows.apply(viewer.initial);
-  viewer.tessellation = options.tessellation;
+  applyLookOptions(options.look, viewer.initial);
+  viewer.autoTessellation = options.tessellation == "auto";
+  if (!viewer.autoTessellation) viewer.tessellation = parseTessellationFactor(options.tessellation);
   viewer.logKeyLatency = options.keyLatency;
   if (!options.script.empty())
     viewer.script = parseViewerScript(options.script, Viewer::keyNames());
   const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene);
+  applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
+  printSceneWarnings(scene, true);
 
   std::unique_ptr<Window> window;
   try {
@@ -72,6 +78,7 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
       "view", "Interactive window: orbit the scene, toggle shading live (H: keys)");
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
+  addCameraOptions(command, options->camera);
   command->add_option("--size", options->size, "Initial window size WIDTHxHEIGHT")
       ->capture_default_str();
   command
@@ -83,15 +90,15 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   command
       ->add_option("--tess", options->tessellation,
-                   "Initial tessellation scale, as for render (T and G change it)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.125f, 16.0f));
+                   "Initial tessellation scale 0.125..16 as for render, or auto: for the "
+                   "initial view, chord error <= 0.5 px (T, G and A change it)")
+      ->capture_default_str();
+  addLookOptions(command, options->look);
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
   command->add_option("--depth", options->depth, namedHelp("Depth buffer", kDepthModeNames))
       ->capture_default_str();
-  options->shadows.add(command);
   command->add_flag("--key-latency", options->keyLatency,
                     "Print, per key, the milliseconds from handling it to the next frame's "
                     "present and to that frame's end on the device");

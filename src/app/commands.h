@@ -18,6 +18,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addInfoCommand(CLI::App& app, const GlobalOptions& global);
+CommandRunner addStudyCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addScenesCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions& global);
 CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global);

@@ -1,7 +1,5 @@
 // shadelab: one binary, subcommands. main only parses and dispatches; each
 // command lives in its own cmd_*.cpp.
-#include <malloc.h>
-
 #include <cstdio>
 #include <map>
 
@@ -14,14 +12,6 @@
 
 int main(int argc, char** argv) {
   using namespace shadelab;
-  // lavapipe runs in this process and allocates its vertex output per draw.
-  // With glibc's defaults each large block is mmapped, page-faulted in and
-  // unmapped again every frame; on a 102,400-triangle mesh that made one
-  // frame in four take 3x the median (p95 52 ms vs 16 ms, `render dense
-  // --frames 150 --mode unlit`). Keeping freed memory in the heap removes
-  // those spikes (p95 20 ms) and lowers the median by ~5%.
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   CLI::App app{"shadelab: classic real-time rendering on Vulkan, measured"};
   app.require_subcommand(1);
   app.fallthrough();  // global options may follow the subcommand name
@@ -30,12 +20,13 @@ int main(int argc, char** argv) {
   app.add_flag("--validate,!--no-validate", global.validate,
                "Enable the Vulkan validation layer; any message makes the exit code non-zero");
   app.add_option("--device", global.device, "Use the Vulkan 1.3 device whose name contains NAME");
+  app.set_version_flag("--version", std::string("shadelab ") + SHADELAB_VERSION);
 
   std::map<std::string, CommandRunner> commands = {
       {"render", addRenderCommand(app, global)}, {"compare", addCompareCommand(app, global)},
       {"bench", addBenchCommand(app, global)},   {"info", addInfoCommand(app, global)},
       {"trace", addTraceCommand(app, global)},   {"scenes", addScenesCommand(app, global)},
-      {"view", addViewCommand(app, global)},
+      {"study", addStudyCommand(app, global)},   {"view", addViewCommand(app, global)},
   };
   try {
     app.parse(argc, argv);
@@ -43,6 +34,8 @@ int main(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
+  } catch (const CLI::CallForVersion& version) {
+    return app.exit(version);
   } catch (const CLI::ParseError& error) {
     app.exit(error);
     return 2;  // usage error

@@ -2,12 +2,15 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/base/image.h"
 #include "core/base/split_screen.h"
 #include "core/base/stats.h"
+#include "core/scene/lod.h"
 #include "core/vulkan/vk_check.h"
 #include "view/present_pass.h"
 
@@ -84,6 +87,9 @@ Viewer::Viewer(Window& window, const Context& context, Scene scene, const Viewer
     settings_.width = uint32_t(size.x);
     settings_.height = uint32_t(size.y);
   }
+  if (options.autoTessellation && settings_.width > 0 && settings_.height > 0)
+    tessellateForView(scene_, ViewSize{camera_.camera(), settings_.width, settings_.height},
+                      kAutoTessellationErrorPixels);
   // Settings the device cannot draw are an InputError here, before any frame.
   uploadScene();
   for (Semaphore& semaphore : imageAvailable_) semaphore = createSemaphore(context.device());
@@ -378,8 +384,17 @@ void Viewer::finishSlotWork(SlotWork& work) {
   if (!work.screenshotPath.empty()) {
     writeImage(toImage(work.screenshot, work.screenshotExtent, swapchain_.format()),
                work.screenshotPath);
+    // The sidecar: what a headless render of this view needs.
+    std::filesystem::path sidecar =
+        std::filesystem::path(work.screenshotPath).replace_extension(".json");
+    const Camera& camera = camera_.camera();
+    std::string name;
+    for (char c : scene_.name)
+      name += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+    writeTextFile(sidecar, "{\"scene\": \"" + name + "\",\n \"camera\": " + cameraJson(camera) +
+                               ",\n \"options\": \"" + cameraOptionLine(camera) + "\"}\n");
     say("wrote " + work.screenshotPath + " (" + std::to_string(work.screenshotExtent.width) + "x" +
-        std::to_string(work.screenshotExtent.height) + ", as presented)");
+        std::to_string(work.screenshotExtent.height) + ", as presented) and " + sidecar.string());
     work.screenshotPath.clear();
     work.screenshot = Buffer();
   }

@@ -25,6 +25,9 @@
 
 namespace shadelab {
 
+// A and --tess auto: the chord error bound, in pixels (render --tess-error's default).
+inline constexpr float kAutoTessellationErrorPixels = 0.5f;
+
 struct ViewerOptions {
   VkPresentModeKHR presentMode = VK_PRESENT_MODE_FIFO_KHR;
   std::optional<std::vector<ScriptStep>> script;  // none: interactive
@@ -32,6 +35,7 @@ struct ViewerOptions {
   uint32_t metricsInterval = 30;                  // frames between split-screen error readbacks
   FrameSettings initial;                          // model, MSAA, ...; the size follows the window
   float tessellation = 1.0f;                      // as render --tess; T and G change it
+  bool autoTessellation = false;  // --tess auto: tessellate for the initial view (as A does)
   // --key-latency: print, per key, the wall time from handling it to the next
   // frame's present and to that frame finishing on the device.
   bool logKeyLatency = false;

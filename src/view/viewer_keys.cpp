@@ -61,6 +61,13 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
          v.camera_ = CameraController(v.sceneCamera_);
          v.say("camera reset");
        }},
+      {'V', "V", "print the camera as options for render, trace and compare",
+       [](Viewer& v) {
+         std::string line = cameraOptionLine(v.camera_.camera());
+         std::printf("camera: %s\n", line.c_str());
+         std::fflush(stdout);
+         v.say("camera printed to the terminal: " + line);
+       }},
       {'C', "C", "split screen: the four models side by side, errors against Phong",
        [](Viewer& v) {
          FrameSettings next = v.settings_;
@@ -188,10 +195,9 @@ void Viewer::setTessellation(float scale) {
 // As render --tess auto, for the view on screen now; the camera may move on
 // afterwards (press A again), T and G go back to a fixed factor.
 void Viewer::autoTessellate() {
-  constexpr float kMaxErrorPixels = 0.5f;  // render --tess-error's default
   VkExtent2D extent = swapchain_.extent();
   tessellateForView(scene_, ViewSize{camera_.camera(), extent.width, extent.height},
-                    kMaxErrorPixels);
+                    kAutoTessellationErrorPixels);
   uploadScene();
   say("automatic tessellation for this view (chord error <= 0.5 px): " +
       withThousands(gpuScene_.triangles) + " triangles");

@@ -1,5 +1,8 @@
 #include "core/scene/scene.h"
 
+#include <cstdio>
+
+#include "core/scene/scene_json_fields.h"
 #include "core/scene/transform.h"
 
 namespace shadelab {
@@ -21,6 +24,89 @@ glm::mat4 Camera::projectionMatrix(float aspect, bool reversedZ) const {
                        : orthographic(left, right, bottom, top, near, far);
   }
   return glm::mat4(1.0f);
+}
+
+std::optional<CameraProblem> findCameraProblem(const Camera& camera) {
+  using scene_json::formatNumber;
+  if (!(camera.far > camera.near))
+    return CameraProblem{"far",
+                         "far (" + formatNumber(camera.far) + ") is not beyond near (" +
+                             formatNumber(camera.near) + ")",
+                         "0 < near < far"};
+  if (!(camera.right > camera.left))
+    return CameraProblem{"right",
+                         "right (" + formatNumber(camera.right) + ") is not greater than left (" +
+                             formatNumber(camera.left) + ")",
+                         "left < right"};
+  if (!(camera.top > camera.bottom))
+    return CameraProblem{"top",
+                         "top (" + formatNumber(camera.top) + ") is not greater than bottom (" +
+                             formatNumber(camera.bottom) + ")",
+                         "bottom < top"};
+  glm::vec3 view = camera.at - camera.eye;
+  if (glm::length(view) == 0.0f)
+    return CameraProblem{"at", "at equals eye, so there is no viewing direction",
+                         "a point other than eye"};
+  if (glm::length(camera.up) == 0.0f)
+    return CameraProblem{"up", "zero-length up vector", "a non-zero vector"};
+  // lookAt needs up x (at - eye) to define the camera's x axis.
+  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) < 1e-6f)
+    return CameraProblem{"up", "up is parallel to the viewing direction at - eye",
+                         "a vector not parallel to at - eye"};
+  return std::nullopt;
+}
+
+namespace {
+std::string roundTrip(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
+}
+std::string triple(const glm::vec3& v) {
+  return roundTrip(v.x) + "," + roundTrip(v.y) + "," + roundTrip(v.z);
+}
+}  // namespace
+
+std::string cameraOptionLine(const Camera& camera) {
+  return "--eye " + triple(camera.eye) + " --at " + triple(camera.at) + " --up " +
+         triple(camera.up) + " --fovy " + roundTrip(camera.fovyDegrees);
+}
+
+std::string cameraJson(const Camera& camera) {
+  auto array = [](const glm::vec3& v) {
+    return "[" + roundTrip(v.x) + ", " + roundTrip(v.y) + ", " + roundTrip(v.z) + "]";
+  };
+  std::string json = "{\"eye\": " + array(camera.eye) + ", \"at\": " + array(camera.at) +
+                     ", \"up\": " + array(camera.up) + ", \"projection\": \"" +
+                     std::string(nameOf(kProjectionNames, camera.projection)) + "\"";
+  if (camera.projection == Projection::Perspective)
+    json += ", \"fovy\": " + roundTrip(camera.fovyDegrees);
+  else
+    json += ", \"left\": " + roundTrip(camera.left) + ", \"right\": " + roundTrip(camera.right) +
+            ", \"bottom\": " + roundTrip(camera.bottom) + ", \"top\": " + roundTrip(camera.top);
+  return json + ", \"near\": " + roundTrip(camera.near) + ", \"far\": " + roundTrip(camera.far) +
+         "}";
+}
+
+std::vector<std::string> sceneWarnings(const Scene& scene, bool rasteriser) {
+  std::vector<std::string> warnings;
+  if (scene.lights.empty() && !scene.objects.empty())
+    warnings.push_back("scene '" + scene.name +
+                       "' has no lights: only ambient light and emission will show");
+  if (rasteriser && !scene.environment.present()) {
+    size_t count = 0;
+    std::string first;
+    for (const Object& object : scene.objects)
+      if (object.material.reflectivity > 0.0f || object.material.transparency > 0.0f)
+        if (count++ == 0) first = object.name;
+    if (count > 0)
+      warnings.push_back(
+          std::to_string(count) + " reflective or transparent object(s) (first: '" + first +
+          "') in a scene without an environment: the rasteriser reflects and refracts only the "
+          "environment, so they show their local shading alone (add an \"environment\" to the "
+          "scene, or see them with `trace`)");
+  }
+  return warnings;
 }
 
 uint32_t Scene::addMesh(Mesh mesh) {

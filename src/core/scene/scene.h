@@ -3,6 +3,7 @@
 // directional lights, and objects (a mesh, a transform and a material).
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,6 +37,23 @@ struct Camera {
   // applies to the perspective projection only. reversedZ maps near to 1, far to 0.
   glm::mat4 projectionMatrix(float aspect, bool reversedZ = false) const;
 };
+
+// What makes a camera unusable, if anything: the field at fault ("eye",
+// "at", "up", "far", "right", "top"), what is wrong and what was expected.
+// One check for the scene format and the command line.
+struct CameraProblem {
+  std::string field;
+  std::string problem;
+  std::string expected;
+};
+std::optional<CameraProblem> findCameraProblem(const Camera& camera);
+// The camera as command-line options that reproduce it on the scene it came
+// from: "--eye X,Y,Z --at X,Y,Z --up X,Y,Z --fovy DEG", numbers that read
+// back to the same floats. What the viewer prints and saves with screenshots.
+std::string cameraOptionLine(const Camera& camera);
+// The camera as the scene format's "camera" object (one line of JSON), ready
+// to paste into a scene file.
+std::string cameraJson(const Camera& camera);
 
 enum class LightType { Point, Directional };
 inline constexpr NameTable<LightType, 2> kLightTypeNames = {
@@ -167,5 +185,12 @@ inline constexpr float kZFightGap = 0.05f;
 inline constexpr glm::vec3 kZFightNearColor{1.0f, 0.0f, 0.0f};
 inline constexpr glm::vec3 kZFightFarColor{0.0f, 0.0f, 1.0f};
 Scene zfightScene(Projection projection, float near);
+
+// What a scene probably does not mean, worth a warning before drawing it: no
+// lights (only ambient and emission show); for the rasteriser
+// (`rasteriser`), reflective or transparent materials with no environment
+// (its environment term has nothing to show, so they look matte). Empty when
+// nothing is suspicious.
+std::vector<std::string> sceneWarnings(const Scene& scene, bool rasteriser);
 
 }  // namespace shadelab

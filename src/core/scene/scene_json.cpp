@@ -172,29 +172,11 @@ using MaterialTable = std::map<std::string, Material>;
 constexpr int kMaxDepth = 64;  // nested children; deeper is a mistake, not a model
 
 void checkCamera(const Field& field, const Camera& camera) {
-  if (!(camera.far > camera.near))
-    field.at(field.has("far") ? "far" : "near")
-        .fail("far (" + formatNumber(camera.far) + ") is not beyond near (" +
-                  formatNumber(camera.near) + ")",
-              "0 < near < far");
-  if (!(camera.right > camera.left))
-    field.at("right").fail("right (" + formatNumber(camera.right) + ") is not greater than left (" +
-                               formatNumber(camera.left) + ")",
-                           "left < right");
-  if (!(camera.top > camera.bottom))
-    field.at("top").fail("top (" + formatNumber(camera.top) + ") is not greater than bottom (" +
-                             formatNumber(camera.bottom) + ")",
-                         "bottom < top");
-  glm::vec3 view = camera.at - camera.eye;
-  if (glm::length(view) == 0.0f)
-    field.at("at").fail("at equals eye, so there is no viewing direction",
-                        "a point other than eye");
-  if (glm::length(camera.up) == 0.0f)
-    field.at("up").fail("zero-length up vector", "a non-zero vector");
-  // lookAt needs up x (at - eye) to define the camera's x axis.
-  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) < 1e-6f)
-    field.at("up").fail("up is parallel to the viewing direction at - eye",
-                        "a vector not parallel to at - eye");
+  std::optional<CameraProblem> problem = findCameraProblem(camera);
+  if (!problem) return;
+  std::string at = problem->field;
+  if (at == "far" && !field.has("far")) at = "near";
+  field.at(at).fail(problem->problem, problem->expected);
 }
 
 Camera parseCamera(const Field& field) {

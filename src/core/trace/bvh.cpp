@@ -282,11 +282,11 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) co
   return found;
 }
 
-uint32_t Bvh::countHits(const Ray& ray, float tMin, float tMax) const {
-  if (triangles_.empty()) return 0;
+template <typename Visit>
+void Bvh::visitHits(const Ray& ray, float tMin, float tMax, Visit&& visit) const {
+  if (triangles_.empty()) return;
   const glm::vec3 inverse = 1.0f / ray.direction;
   const float directionLength2 = squaredLength(ray.direction);
-  uint32_t hits = 0;
   std::array<uint32_t, kStackSize> stack;
   uint32_t top = 0;
   stack[top++] = 0;
@@ -298,8 +298,9 @@ uint32_t Bvh::countHits(const Ray& ray, float tMin, float tMax) const {
     if (node.count > 0) {
       for (uint32_t i = node.first; i < node.first + node.count; ++i) {
         const Triangle& tri = triangles_[i];
-        hits += hitTriangle(ray, directionLength2, tri.v0, tri.edge1, tri.edge2, tri.normalLength2,
-                            tMin, tMax, scratch);
+        if (hitTriangle(ray, directionLength2, tri.v0, tri.edge1, tri.edge2, tri.normalLength2,
+                        tMin, tMax, scratch))
+          visit(tri);
       }
       continue;
     }
@@ -307,7 +308,17 @@ uint32_t Bvh::countHits(const Ray& ray, float tMin, float tMax) const {
     stack[top++] = node.first;
     stack[top++] = node.first + 1;
   }
+}
+
+uint32_t Bvh::countHits(const Ray& ray, float tMin, float tMax) const {
+  uint32_t hits = 0;
+  visitHits(ray, tMin, tMax, [&](const Triangle&) { ++hits; });
   return hits;
+}
+
+void Bvh::forEachHitNormal(const Ray& ray, float tMin, float tMax,
+                           const std::function<void(glm::vec3)>& visit) const {
+  visitHits(ray, tMin, tMax, [&](const Triangle& tri) { visit(glm::cross(tri.edge1, tri.edge2)); });
 }
 
 }  // namespace shadelab

@@ -3,6 +3,7 @@
 // surface area heuristic, for the CPU ray tracer: closest hit (Moller-Trumbore
 // barycentrics) and a count of every hit along a segment (shadow rays).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/scene/mesh.h"
@@ -36,6 +37,10 @@ class Bvh {
   bool intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) const;
   // Number of triangles hit with tMin < t < tMax.
   uint32_t countHits(const Ray& ray, float tMin, float tMax) const;
+  // Calls visit(n) for each triangle hit with tMin < t < tMax, n its face
+  // normal edge1 x edge2 (not normalised), in no particular order.
+  void forEachHitNormal(const Ray& ray, float tMin, float tMax,
+                        const std::function<void(glm::vec3)>& visit) const;
 
   Bounds bounds() const;
   uint32_t depth() const { return depth_; }
@@ -53,6 +58,8 @@ class Bvh {
     uint32_t index;
   };
 
+  template <typename Visit>
+  void visitHits(const Ray& ray, float tMin, float tMax, Visit&& visit) const;
   struct BuildInput;
   void build(uint32_t node, BuildInput& input, uint32_t begin, uint32_t end, uint32_t level);
 

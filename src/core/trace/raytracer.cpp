@@ -12,6 +12,7 @@
 #include "core/base/errors.h"
 #include "core/scene/lighting.h"
 #include "core/scene/uv_mapping.h"
+#include "core/trace/optics.h"
 #include "core/trace/trace_material.h"
 #include "core/trace/trace_shapes.h"
 #include "interface.h"
@@ -111,6 +112,7 @@ struct RayTracer::TracedObject {
   glm::mat3 normalToWorld{1.0f};  // inverse transpose of the transform's 3x3
   Bounds worldBounds;
   float transparency = 0.0f;
+  float ior = 1.5f;
   uint32_t sceneObject = 0;  // index into Scene::objects
   UvProjection projection = UvProjection::Mesh;
   Bounds uvBounds;  // the scene mesh's box, which S-mappings are fitted to (as at upload)
@@ -123,6 +125,10 @@ struct RayTracer::TracedObject {
   bool intersect(const Ray& local, float tMin, float tMax, LocalHit& hit,
                  glm::vec3& geometric) const;
   uint32_t countHits(const Ray& local, float tMax) const;
+  // Calls visit(n) with the outward normal (object space, not normalised) at
+  // each crossing with 0 < t < tMax.
+  void forEachCrossingNormal(const Ray& local, float tMax,
+                             const std::function<void(glm::vec3)>& visit) const;
   // The texture coordinates at an object-space point on (or, linearly
   // extended, near) the surface hit with `normal` on `triangle`.
   glm::vec2 uvAt(glm::vec3 point, glm::vec3 normal, uint32_t triangle) const;
@@ -192,6 +198,42 @@ uint32_t RayTracer::TracedObject::countHits(const Ray& local, float tMax) const 
   return 0;
 }
 
+void RayTracer::TracedObject::forEachCrossingNormal(
+    const Ray& local, float tMax, const std::function<void(glm::vec3)>& visit) const {
+  Crossings crossings;
+  switch (surface) {
+    case Surface::Sphere:
+      crossings = sphereCrossings(local, radius);
+      break;
+    case Surface::Plane:
+      crossings = planeCrossings(local, size);
+      break;
+    case Surface::Box:
+      crossings = boxCrossings(local, halfExtents);
+      break;
+    case Surface::Mesh:
+      bvh->forEachHitNormal(local, 0.0f, tMax, visit);
+      return;
+  }
+  for (int i = 0; i < crossings.count; ++i) {
+    if (!(crossings.t[i] > 0.0f && crossings.t[i] < tMax)) continue;
+    const glm::vec3 point = local.at(crossings.t[i]);
+    if (surface == Surface::Sphere) {
+      visit(point);
+    } else if (surface == Surface::Plane) {
+      visit({0.0f, 1.0f, 0.0f});
+    } else {  // the box face whose slab the point is on
+      const glm::vec3 relative = glm::abs(point) / halfExtents;
+      const int axis = relative.x >= relative.y && relative.x >= relative.z ? 0
+                       : relative.y >= relative.z                           ? 1
+                                                                            : 2;
+      glm::vec3 normal{0.0f};
+      normal[axis] = 1.0f;
+      visit(normal);
+    }
+  }
+}
+
 RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene) {
   std::vector<const Bvh*> meshBvh(scene.meshes.size(), nullptr);
   std::vector<const Mesh*> meshSource(scene.meshes.size(), nullptr);
@@ -227,6 +269,7 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.worldToObject = glm::inverse(object.transform);
     traced.normalToWorld = glm::transpose(glm::inverse(glm::mat3(object.transform)));
     traced.transparency = object.material.transparency;
+    traced.ior = object.material.ior;
     traced.projection = object.material.uvProjection;
     if (traced.projection != UvProjection::Mesh)
       traced.uvBounds = computeBounds(scene.meshes[object.mesh]);
@@ -297,16 +340,30 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float
   return hit;
 }
 
-float RayTracer::transmittance(const Ray& ray, float tMax) const {
+float RayTracer::transmittance(const Ray& ray, float tMax, bool fresnel) const {
   const glm::vec3 inverse = 1.0f / ray.direction;
+  const glm::vec3 unit = glm::normalize(ray.direction);
   float passed = 1.0f;
   for (const TracedObject& object : objects_) {
     float tEntry;
     if (!intersectBounds(object.worldBounds, ray, inverse, 0.0f, tMax, tEntry)) continue;
-    const uint32_t crossings = object.countHits(object.toLocal(ray), tMax);
-    if (crossings == 0) continue;
-    if (object.transparency <= 0.0f) return 0.0f;
-    passed *= std::pow(object.transparency, float(crossings));
+    const Ray local = object.toLocal(ray);
+    if (!fresnel || object.transparency <= 0.0f) {
+      const uint32_t crossings = object.countHits(local, tMax);
+      if (crossings == 0) continue;
+      if (object.transparency <= 0.0f) return 0.0f;
+      passed *= std::pow(object.transparency, float(crossings));
+      continue;
+    }
+    // The straight shadow ray does not refract, so each crossing is weighed
+    // as light arriving from air at the ray's angle to the surface: for a
+    // sphere, entry and exit see the same angle, as the refracted path would.
+    object.forEachCrossingNormal(local, tMax, [&](glm::vec3 normal) {
+      const glm::vec3 world = object.normalToWorld * normal;
+      const float length = glm::length(world);
+      const float cosine = length > 0.0f ? std::abs(glm::dot(world / length, unit)) : 1.0f;
+      passed *= object.transparency * (1.0f - schlickFresnel(cosine, 1.0f, object.ior));
+    });
   }
   return passed;
 }
@@ -343,7 +400,7 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
       Ray shadow = offsetRay(hit, toLight, settings.epsilon);
       if (point) shadow.direction = light.position - shadow.origin;  // the segment is 0 < t < 1
       ++stats.shadowRays;
-      passed = transmittance(shadow, point ? 1.0f : kInfinity);
+      passed = transmittance(shadow, point ? 1.0f : kInfinity, settings.fresnel);
       if (passed <= 0.0f) continue;
     }
     Light& out = lit[visible++];
@@ -401,24 +458,35 @@ glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uin
   if (depth >= settings.maxDepth) return colour;
   const glm::vec3 incident = glm::normalize(ray.direction);
   const float kr = material.reflectivity, kt = material.transparency;
-  if (kr > 0.0f && weight * kr >= settings.minContribution) {
+  // Of the transmitted share kt, the Fresnel reflectance F goes along the
+  // mirror direction and 1 - F is refracted; total internal reflection
+  // (F = 1) sends all of it back inside. Entering the object from air
+  // (eta = 1 / ior) or leaving it (ior / 1), by the side the ray arrived on.
+  std::optional<glm::vec3> refracted;
+  float fresnel = 0.0f;
+  if (kt > 0.0f) {
+    const float eta = hit.frontFace ? 1.0f / material.ior : material.ior;
+    refracted = refractDirection(incident, hit.shadingNormal, eta);
+    if (!refracted) {
+      ++stats.totalInternalReflections;
+      fresnel = 1.0f;
+    } else if (settings.fresnel) {
+      const float outside = 1.0f, inside = material.ior;
+      fresnel = schlickFresnel(glm::dot(-incident, hit.shadingNormal),
+                               hit.frontFace ? outside : inside, hit.frontFace ? inside : outside);
+    }
+  }
+  const float reflectedWeight = kr + kt * fresnel, transmittedWeight = kt * (1.0f - fresnel);
+  if (reflectedWeight > 0.0f && weight * reflectedWeight >= settings.minContribution) {
     const Ray reflected =
         offsetRay(hit, mirrorDirection(incident, hit.shadingNormal), settings.epsilon);
-    colour += kr * traceRay(reflected, kInfinity, reflected.origin, depth + 1, weight * kr,
-                            settings, stats, next);
+    colour += reflectedWeight * traceRay(reflected, kInfinity, reflected.origin, depth + 1,
+                                         weight * reflectedWeight, settings, stats, next);
   }
-  if (kt > 0.0f && weight * kt >= settings.minContribution) {
-    // Entering the object from air (eta = 1 / ior) or leaving it (ior / 1),
-    // by the side of the surface the ray arrived on.
-    const float eta = hit.frontFace ? 1.0f / material.ior : material.ior;
-    std::optional<glm::vec3> refracted = refractDirection(incident, hit.shadingNormal, eta);
-    if (!refracted) ++stats.totalInternalReflections;
-    // Total internal reflection sends the transmitted share back inside.
-    const glm::vec3 direction =
-        refracted ? glm::normalize(*refracted) : mirrorDirection(incident, hit.shadingNormal);
-    const Ray transmitted = offsetRay(hit, direction, settings.epsilon);
-    colour += kt * traceRay(transmitted, kInfinity, transmitted.origin, depth + 1, weight * kt,
-                            settings, stats, next);
+  if (transmittedWeight > 0.0f && weight * transmittedWeight >= settings.minContribution) {
+    const Ray transmitted = offsetRay(hit, glm::normalize(*refracted), settings.epsilon);
+    colour += transmittedWeight * traceRay(transmitted, kInfinity, transmitted.origin, depth + 1,
+                                           weight * transmittedWeight, settings, stats, next);
   }
   return colour;
 }

@@ -5,11 +5,17 @@
 // rasteriser cannot do: exact surfaces, shadows, mirror reflection and
 // refraction.
 //
-//   I = local + kr I(reflected ray) + kt I(refracted ray)
-//   local = emissive + Ia ka + sum over unshadowed lights of the Phong terms
+//   I = local + (kr + kt F) I(reflected ray) + kt (1 - F) I(refracted ray)
+//   local = emissive + Ia ka + sum over lights of k_shadow times the Phong terms
 //
-// Shadow rays are dimmed by kt of each transparent surface they cross (no
-// refraction of light, as in Whitted 1980). Surfaces are two-sided: a ray
+// F is the dielectric Fresnel reflectance by Schlick's approximation, the
+// formula of the rasteriser's environment term (optics.h, environment.glsl),
+// with the angle on the optically thinner side; 1 under total internal
+// reflection. k_shadow, what a shadow ray lets through, is the product over
+// every surface it crosses of kt (1 - F), F at the straight ray's angle to
+// that surface seen from air: 0 behind an opaque surface. Shadow rays go
+// straight (no refraction of light, as in Whitted 1980), so the light a
+// glass ball focuses (a caustic) is never drawn. Surfaces are two-sided: a ray
 // hitting the back of one sees it lit with the normal turned towards the ray.
 // Textures (diffuse, normal and height maps) are sampled as the textured
 // forward shaders sample them, filtered over the ray's footprint
@@ -50,6 +56,10 @@ struct TraceSettings {
   float minContribution = 1.0f / 512.0f;
   bool blinn = false;   // Blinn-Phong (N.H)^n instead of Phong (R.V)^n
   bool shadows = true;  // false: every light reaches every surface, as in the rasteriser
+  // false: no Fresnel term (F = 0 except under total internal reflection):
+  // kr and kt are fixed weights and shadow rays pass kt per surface, as the
+  // tracer did before issue 16; kept to measure what Fresnel changes.
+  bool fresnel = true;
   // Called on the calling thread at each further tenth of the rows done,
   // and with 1 at the end; empty: no reports.
   std::function<void(float fraction)> progress;
@@ -134,9 +144,10 @@ class RayTracer {
   glm::vec3 traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth, float weight,
                      const TraceSettings& settings, TraceStats& stats, RayCone cone = {}) const;
   std::optional<SurfaceHit> intersect(const Ray& ray, float tMin, float tMax) const;
-  // The fraction of light passing from `origin` along `direction` for
-  // 0 < t < tMax: 0 behind an opaque surface, the product of kt otherwise.
-  float transmittance(const Ray& ray, float tMax) const;
+  // k_shadow: the fraction of light passing from `origin` along `direction`
+  // for 0 < t < tMax: 0 behind an opaque surface, otherwise the product over
+  // the surfaces crossed of kt (1 - F), or of kt alone without `fresnel`.
+  float transmittance(const Ray& ray, float tMax, bool fresnel = true) const;
 
  private:
   struct TracedObject;

@@ -18,6 +18,10 @@ struct ContextOptions {
   std::vector<const char*> instanceExtensions;
   std::vector<const char*> deviceExtensions;
   bool echoValidation = true;  // also print each validation message to stderr
+  // glibc keeps freed blocks in the heap instead of unmapping them (mallopt,
+  // process-wide, once): lavapipe's per-draw allocations otherwise make one
+  // frame in four 3x slower. Off for a program that must keep glibc's defaults.
+  bool keepFreedMemoryInHeap = true;
 };
 
 struct DeviceDescription {

@@ -1,0 +1,53 @@
+#include "measure/study.h"
+
+#include "core/base/errors.h"
+
+namespace shadelab {
+
+// Each study's runner, defined in its own study_<name>.cpp.
+StudyResult runZFightStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runAcneStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runTirStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runGouraudHighlightStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runEnvVsTraceStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runBumpSilhouetteStudy(const StudyOptions& options, const StudyServices& services);
+
+const std::vector<Study>& studies() {
+  static const std::vector<Study> table = {
+      {"zfight",
+       "z-fighting per depth mode, perspective and orthographic, against the near plane and "
+       "against the polygons' distance",
+       640, 360, runZFightStudy},
+      {"acne",
+       "the tracer's epsilon against shadow acne (lit points shadowed) and light leaks "
+       "(shadowed points lit); CPU only",
+       320, 180, runAcneStudy},
+      {"tir",
+       "total internal reflection: light refracted out of glass per ior and angle, energy kept, "
+       "the critical angle against asin(1/ior); CPU only",
+       256, 256, runTirStudy},
+      {"gouraud-highlight",
+       "Gouraud's peak highlight over Phong's against how finely the plane is subdivided", 320, 180,
+       runGouraudHighlightStudy},
+      {"bump-silhouette",
+       "a bump-mapped sphere beside the same height field as displaced geometry: outline and "
+       "interior differences",
+       480, 360, runBumpSilhouetteStudy},
+      {"env-vs-trace",
+       "environment mapping against the traced reflection on env, FLIP split by where the traced "
+       "path goes (hits an object or escapes), per shading model",
+       480, 270, runEnvVsTraceStudy},
+  };
+  return table;
+}
+
+const Study& findStudy(const std::string& name) {
+  std::string names;
+  for (const Study& study : studies()) {
+    if (study.name == name) return study;
+    names += (names.empty() ? "" : ", ") + std::string(study.name);
+  }
+  throw InputError("study '" + name + "': expected one of " + names);
+}
+
+}  // namespace shadelab
