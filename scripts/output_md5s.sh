@@ -4,6 +4,8 @@
 # three traces and the default comparison sheet. Run it before and after a
 # change and diff the two lists.
 #   scripts/output_md5s.sh [BINARY] [DIR]   (defaults: build/release/shadelab, a temp dir)
+# RENDER_ARGS is appended to every render and compare (e.g. RENDER_ARGS="--shadows off"
+# reproduces the images of a binary from before shadow maps).
 set -euo pipefail
 binary="${1:-build/release/shadelab}"
 dir="${2:-$(mktemp -d)}"
@@ -13,7 +15,8 @@ scenes=$("$binary" info | sed -n 's/^built-in scenes: *//p')
 modes=$("$binary" info | sed -n 's/^shading models: *//p')
 render() {  # NAME ARGS...
   local name="$1"; shift
-  "$binary" render "$@" -o "$dir/$name.png" >/dev/null
+  # shellcheck disable=SC2086  # RENDER_ARGS is a list of words
+  "$binary" render "$@" ${RENDER_ARGS:-} -o "$dir/$name.png" >/dev/null
 }
 for scene in $scenes; do
   for mode in $modes; do render "$scene-$mode" "$scene" --mode "$mode" --size 640x360; done
@@ -33,5 +36,5 @@ render spheres-frames3 spheres --frames 3
 for scene in default whitted env; do
   "$binary" trace "$scene" --size 320x180 --spp 4 -o "$dir/trace-$scene.png" >/dev/null
 done
-"$binary" compare default --size 240x135 -o "$dir/compare-default.png" >/dev/null
+"$binary" compare default --size 240x135 ${RENDER_ARGS:-} -o "$dir/compare-default.png" >/dev/null
 cd "$dir" && md5sum -- *.png *.json

@@ -29,13 +29,34 @@ layout(location = 7) flat out vec3 outFlatSpecular;
 #endif
 layout(location = 10) flat out vec4 outFlatEnvReflected;
 layout(location = 11) flat out vec4 outFlatEnvRefracted;
+#ifdef SHADOW_VARYINGS
+// With shadows, outFlatColor is the ambient part only; each light's term is
+// weighed by k_shadow per fragment (lighting.glsl), looked up at the
+// fragment's position with the face normal.
+layout(location = 12) out vec3 outShadowPosition;
+layout(location = 13) flat out vec3 outShadowNormal;
+layout(location = 14) flat out vec3 outLightTerms[MAX_LIGHTS];
+#ifdef TEXTURED
+layout(location = 22) flat out vec3 outLightSpecular[MAX_LIGHTS];
+#endif
+#endif
 
 void main() {
   vec3 p0 = inPosition[0], p1 = inPosition[1], p2 = inPosition[2];
   // Counter-clockwise winding seen from the front gives the outward normal.
   vec3 faceNormal = cross(p1 - p0, p2 - p0);
   vec3 center = (p0 + p1 + p2) / 3.0;
+#ifdef SHADOW_VARYINGS
+  vec3 terms[MAX_LIGHTS];
 #ifdef TEXTURED
+  vec3 diffusePart, specularTerms[MAX_LIGHTS];
+  vec3 specularPart = vec3(0.0);
+  illuminatePartsEach(center, faceNormal, diffusePart, terms, specularTerms);
+#else
+  vec3 color;
+  illuminateEach(center, faceNormal, drawMaterial(), false, color, terms);
+#endif
+#elif defined(TEXTURED)
   vec3 diffusePart, specularPart;
   illuminateParts(center, faceNormal, diffusePart, specularPart);
 #else
@@ -54,6 +75,14 @@ void main() {
 #endif
     outFlatEnvReflected = environment.reflected;
     outFlatEnvRefracted = environment.refracted;
+#ifdef SHADOW_VARYINGS
+    outShadowPosition = inPosition[i];
+    outShadowNormal = faceNormal;
+    outLightTerms = terms;
+#ifdef TEXTURED
+    outLightSpecular = specularTerms;
+#endif
+#endif
     EmitVertex();
   }
   EndPrimitive();

@@ -13,6 +13,8 @@
 // VERTEX_LIGHTING: Gouraud's vertex colour, with ENVIRONMENT_VARYINGS its
 // per-vertex directions; neither: the eye-space position and normal.
 #extension GL_GOOGLE_include_directive : require
+// Shadow maps are looked up here only (shaders/shadows.glsl).
+#define SHADOW_LOOKUP
 #ifdef TEXTURED
 #include "bump.glsl"
 #endif
@@ -42,6 +44,23 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 #ifdef TEXTURED
 layout(location = 5) in vec4 inTangent;
+#endif
+#endif
+
+#ifdef SHADOW_VARYINGS
+layout(location = 12) in vec3 inShadowPosition;
+#ifdef FLAT_VARYINGS
+layout(location = 13) flat in vec3 inShadowNormal;
+layout(location = 14) flat in vec3 inLightTerms[MAX_LIGHTS];
+#ifdef TEXTURED
+layout(location = 22) flat in vec3 inLightSpecular[MAX_LIGHTS];
+#endif
+#else
+layout(location = 13) in vec3 inShadowNormal;
+layout(location = 14) in vec3 inLightTerms[MAX_LIGHTS];
+#ifdef TEXTURED
+layout(location = 22) in vec3 inLightSpecular[MAX_LIGHTS];
+#endif
 #endif
 #endif
 
@@ -91,6 +110,18 @@ void main() {
                                 shadingModel == SHADING_BLINN_PHONG);
   EnvironmentDirections environment =
       environmentDirections(inPosition, inNormal, draw.optics.z);
+#endif
+#ifdef SHADOW_VARYINGS
+  // color holds the ambient part; each light's term enters weighed by its
+  // k_shadow at this fragment.
+  float k[MAX_LIGHTS];
+  shadowCoefficients(inShadowPosition, inShadowNormal, k);
+#ifdef TEXTURED
+  // The specular part passed on is zero here: it travels per light.
+  color += texel * shadowedSum(k, inLightTerms) + shadowedSum(k, inLightSpecular);
+#else
+  color += shadowedSum(k, inLightTerms);
+#endif
 #endif
   if (environmentEnabled && shadingModel != SHADING_UNLIT)
     color += environmentColor(environment, draw.optics.x, draw.optics.y);

@@ -33,6 +33,16 @@ layout(location = 6) out vec3 outSpecular;  // sum f_att Ip ks (R.V)^n
 layout(location = 8) out vec4 outEnvReflected;  // environment.glsl's directions
 layout(location = 9) out vec4 outEnvRefracted;
 #endif
+#ifdef SHADOW_VARYINGS
+// With shadows, outColor is the ambient part only and each light's term
+// travels apart; the fragment stage weighs them by k_shadow (lighting.glsl).
+layout(location = 12) out vec3 outShadowPosition;  // eye space, for the lookup
+layout(location = 13) out vec3 outShadowNormal;
+layout(location = 14) out vec3 outLightTerms[MAX_LIGHTS];  // TEXTURED: the parts the texel scales
+#ifdef TEXTURED
+layout(location = 22) out vec3 outLightSpecular[MAX_LIGHTS];
+#endif
+#endif
 #else
 layout(location = 0) out vec3 outPosition;  // eye space
 layout(location = 1) out vec3 outNormal;    // eye space, not normalised
@@ -50,7 +60,16 @@ void main() {
   outUv = inUv;
 #endif
 #ifdef VERTEX_LIGHTING
+#if defined(SHADOW_VARYINGS)
+  outShadowPosition = eye.xyz;
+  outShadowNormal = normal;
 #ifdef TEXTURED
+  illuminatePartsEach(eye.xyz, normal, outColor, outLightTerms, outLightSpecular);
+  outSpecular = vec3(0.0);
+#else
+  illuminateEach(eye.xyz, normal, drawMaterial(), false, outColor, outLightTerms);
+#endif
+#elif defined(TEXTURED)
   illuminateParts(eye.xyz, normal, outColor, outSpecular);
 #else
   outColor = illuminate(eye.xyz, normal, drawMaterial(), false);

@@ -17,9 +17,12 @@ using mat4 = glm::mat4;
 #define MAX_LIGHTS 8
 
 // Descriptor set 0
-#define BINDING_FRAME 0    // uniform buffer: FrameData
-#define BINDING_OBJECTS 1  // storage buffer: ObjectData[]
+#define BINDING_FRAME 0        // uniform buffer: FrameData
+#define BINDING_SHADOWS 4      // uniform buffer: ShadowData
+#define BINDING_OBJECTS 1      // storage buffer: ObjectData[]
 #define BINDING_ENVIRONMENT 2  // combined image sampler: the environment cube map
+#define BINDING_SHADOW_MAP \
+  3  // combined image sampler (compare): the shadow maps, one layer per view
 
 // Compute passes that build the environment cube (their own set 0)
 #define BINDING_CUBE_TARGET 0  // storage image2DArray: one mip level of the cube, layer = face
@@ -44,6 +47,7 @@ using mat4 = glm::mat4;
 #define SPEC_POINT_LIGHTS 1
 #define SPEC_DIRECTIONAL_LIGHTS 2
 #define SPEC_ATTENUATED_POINT_LIGHTS 3
+#define SPEC_SHADOW_FILTER 4  // SHADOW_*: how the shadow maps are filtered (off: not read)
 // Environment term in the forward pass (id 8: clear of the ids other features add).
 #define SPEC_ENVIRONMENT 8
 #define SHADING_FLAT 0
@@ -51,22 +55,41 @@ using mat4 = glm::mat4;
 #define SHADING_PHONG 2
 #define SHADING_BLINN_PHONG 3
 #define SHADING_UNLIT 4  // constant colour: the timing floor the others are measured against
+#define SHADOW_OFF 0
+#define SHADOW_HARD 1
+#define SHADOW_PCF3 2
+#define SHADOW_PCF5 3
+
+// Shadow-map layers: one per directional light, six (cube faces) per point light.
+#define MAX_SHADOW_VIEWS (6 * MAX_LIGHTS)
 
 // A light in eye space.
 struct GpuLight {
-  vec4 position;     // point: eye-space position, w = 1; directional: unit eye-space direction *towards* the light, w = 0
+  vec4 position;     // point: eye-space position, w = 1; directional: unit eye-space direction
+                     // *towards* the light, w = 0
   vec4 intensity;    // rgb = Ip per channel
   vec4 attenuation;  // f_att = 1 / (a + b d + c d^2): xyz = (a, b, c)
 };
 
 struct FrameData {
   mat4 projection;
-  vec4 ambient;      // rgb = Ia
+  vec4 ambient;  // rgb = Ia
   // The point lights first, then the directional ones; how many of each is a
   // specialization constant (SPEC_POINT_LIGHTS, SPEC_DIRECTIONAL_LIGHTS), so
   // neither a count nor a light's type is uploaded.
   GpuLight lights[MAX_LIGHTS];
   mat4 viewToWorld;  // inverse view rotation: eye-space directions to world space for the cube map
+};
+
+// The shadow maps as the forward pass reads them (BINDING_SHADOW_MAP's layers).
+struct ShadowData {
+  // Per light, in FrameData::lights' order: x = its first layer (-1: no
+  // map), y = the world size of a texel (directional) or of a texel per unit
+  // of distance (point), z = 1 / map size.
+  vec4 lights[MAX_LIGHTS];
+  vec4 bias;  // ShadowBias in texels: x = constant, y = slope, z = normal offset
+  // Per layer: eye space to the layer's clip space (xy -1..1, depth 0..1).
+  mat4 eyeToLight[MAX_SHADOW_VIEWS];
 };
 
 // Per object and per frame: its matrices (read by the vertex stage only).
@@ -86,12 +109,12 @@ struct ObjectData {
 // shaders read the material from here, never from the storage buffer (on
 // llvmpipe that load cost 3 ms per 1280x720 frame, measured).
 struct DrawConstants {
-  vec4 ka;      // rgb
-  vec4 kd;      // rgb
-  vec4 ks;      // rgb, w = shininess n
-  ivec4 object; // x = index into ObjectData[], y = TEXTURE_* flags
+  vec4 ka;         // rgb
+  vec4 kd;         // rgb
+  vec4 ks;         // rgb, w = shininess n
+  ivec4 object;    // x = index into ObjectData[], y = TEXTURE_* flags, z = 1: receives shadows
   vec4 texturing;  // xy = uv scale (repeats), z = bump scale
-  vec4 optics;   // environment term: x = reflectivity kr, y = transparency kt, z = ior
+  vec4 optics;     // environment term: x = reflectivity kr, y = transparency kt, z = ior
 };
 
 // The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/scene/environment.cpp).
@@ -107,12 +130,12 @@ struct SkyParameters {
 // The skybox pass, as push constants.
 struct SkyboxConstants {
   mat4 clipToWorld;  // inverse(projection * view rotation): clip position -> world direction
-  vec4 depth;        // x = the far plane's depth (what the depth buffer is cleared to), y = the near's
+  vec4 depth;  // x = the far plane's depth (what the depth buffer is cleared to), y = the near's
 };
 
 // Equirectangular panorama -> cube conversion.
 struct PanoramaParameters {
-  ivec4 face;   // x = cube face size in texels
+  ivec4 face;     // x = cube face size in texels
   vec4 sampling;  // x = panorama mip level, y = rotation about +y (radians), z = intensity
 };
 

@@ -4,9 +4,16 @@
 // ones. Blinn-Phong replaces (R.V)^n with (N.H)^n, H = normalize(L + V).
 // There is no specular term where N.L <= 0 (the light is behind the surface).
 // Everything is in eye space, so V = normalize(-position).
+// With shadows, each light's term is scaled by its shadow coefficient:
+//   I = Ia ka + sum_i k_shadow,i f_att,i Ip,i [ ... ],  k_shadow in 0..1
+// (shadows.glsl). Only the fragment stage looks the maps up (SHADOW_LOOKUP):
+// flat and Gouraud keep each light's term apart (illuminateEach) and their
+// fragment stage applies k_shadow per light, per fragment, since a shadow
+// edge runs through triangles and does not follow their vertices.
 #ifndef LIGHTING_GLSL
 #define LIGHTING_GLSL
 #include "common.glsl"
+#include "shadows.glsl"
 
 struct SurfaceMaterial {
   vec3 ka;
@@ -70,13 +77,67 @@ vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn
       float denom = light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d2;
       attenuation = denom > 0.0 ? 1.0 / denom : 0.0;
     }
-    color += lightTerm(N, V, toLight * inverseD, attenuation, light.intensity.rgb, material, blinn);
+    vec3 L = toLight * inverseD;
+    vec3 term = lightTerm(N, V, L, attenuation, light.intensity.rgb, material, blinn);
+    if (shadowsLookedUp) term *= shadowCoefficient(i, position, N, L);
+    color += term;
   }
   for (int i = pointLightCount; i < pointLightCount + directionalLightCount; ++i) {
     GpuLight light = frame.lights[i];
     // Unit length already (or zero), normalised once on the host.
-    color += lightTerm(N, V, light.position.xyz, 1.0, light.intensity.rgb, material, blinn);
+    vec3 term = lightTerm(N, V, light.position.xyz, 1.0, light.intensity.rgb, material, blinn);
+    if (shadowsLookedUp) term *= shadowCoefficient(i, position, N, light.position.xyz);
+    color += term;
   }
   return color;
+}
+
+// The equation with each light's term apart, for flat and Gouraud with
+// shadows: I = ambient + sum_i k_shadow,i terms[i], k_shadow found later,
+// per fragment. Lights past the layout's count get zero.
+void illuminateEach(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn,
+                    out vec3 ambient, out vec3 terms[MAX_LIGHTS]) {
+  float lengthN2 = dot(normal, normal);
+  vec3 N = lengthN2 > 1e-40 && lengthN2 < 1e30 ? normal * inversesqrt(lengthN2) : vec3(0.0);
+  vec3 V = safeNormalize(-position);
+  ambient = frame.ambient.rgb * material.ka;
+  for (int i = 0; i < MAX_LIGHTS; ++i) terms[i] = vec3(0.0);
+  for (int i = 0; i < pointLightCount; ++i) {
+    GpuLight light = frame.lights[i];
+    vec3 toLight = light.position.xyz - position;
+    float d2 = dot(toLight, toLight);
+    float inverseD = d2 > 1e-40 ? inversesqrt(d2) : 0.0;
+    float attenuation = 1.0;
+    if (pointLightsAttenuate) {
+      float d = d2 * inverseD;
+      float denom = light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d2;
+      attenuation = denom > 0.0 ? 1.0 / denom : 0.0;
+    }
+    terms[i] = lightTerm(N, V, toLight * inverseD, attenuation, light.intensity.rgb, material, blinn);
+  }
+  for (int i = pointLightCount; i < pointLightCount + directionalLightCount; ++i) {
+    GpuLight light = frame.lights[i];
+    terms[i] = lightTerm(N, V, light.position.xyz, 1.0, light.intensity.rgb, material, blinn);
+  }
+}
+
+// The fragment stage's half of illuminateEach: each light's k_shadow at the
+// fragment's eye-space position, with `normal` (Gouraud's interpolated one,
+// flat's face normal) for the bias; then sum_i k[i] terms[i].
+void shadowCoefficients(vec3 position, vec3 normal, out float k[MAX_LIGHTS]) {
+  float lengthN2 = dot(normal, normal);
+  vec3 N = lengthN2 > 1e-40 && lengthN2 < 1e30 ? normal * inversesqrt(lengthN2) : vec3(0.0);
+  for (int i = 0; i < MAX_LIGHTS; ++i) k[i] = 1.0;
+  for (int i = 0; i < pointLightCount + directionalLightCount; ++i) {
+    vec3 L = i < pointLightCount ? safeNormalize(frame.lights[i].position.xyz - position)
+                                 : frame.lights[i].position.xyz;
+    k[i] = shadowCoefficient(i, position, N, L);
+  }
+}
+
+vec3 shadowedSum(float k[MAX_LIGHTS], vec3 terms[MAX_LIGHTS]) {
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < pointLightCount + directionalLightCount; ++i) sum += k[i] * terms[i];
+  return sum;
 }
 #endif

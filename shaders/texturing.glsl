@@ -28,4 +28,16 @@ void illuminateParts(vec3 position, vec3 normal, out vec3 diffusePart, out vec3 
   diffusePart = illuminate(position, normal, diffuseOnly, false);
   specularPart = illuminate(position, normal, specularOnly, false);
 }
+
+// illuminateParts with each light's term apart (flat and Gouraud with shadows).
+void illuminatePartsEach(vec3 position, vec3 normal, out vec3 ambientPart,
+                         out vec3 diffuseTerms[MAX_LIGHTS], out vec3 specularTerms[MAX_LIGHTS]) {
+  SurfaceMaterial material = drawMaterial();
+  SurfaceMaterial diffuseOnly = SurfaceMaterial(material.ka, material.kd, vec3(0.0), 0.0);
+  SurfaceMaterial specularOnly =
+      SurfaceMaterial(vec3(0.0), vec3(0.0), material.ks, material.shininess);
+  vec3 noAmbient;
+  illuminateEach(position, normal, diffuseOnly, false, ambientPart, diffuseTerms);
+  illuminateEach(position, normal, specularOnly, false, noAmbient, specularTerms);
+}
 #endif

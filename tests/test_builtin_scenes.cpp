@@ -156,10 +156,10 @@ std::filesystem::path sceneFile(const std::string& name) {
   return std::filesystem::path(SHADELAB_ASSET_DIR) / "scenes" / (name + ".json");
 }
 
-TEST(BuiltinScenes, TheTenScenesOfTheCommandLine) {
+TEST(BuiltinScenes, TheElevenScenesOfTheCommandLine) {
   EXPECT_THAT(builtinSceneNames(),
               testing::ElementsAre("bump", "default", "dense", "env", "highlight", "mip-plane",
-                                   "spheres", "teapot", "whitted", "zfight"));
+                                   "shadows", "spheres", "teapot", "whitted", "zfight"));
 }
 
 TEST(BuiltinScenes, EachFileInAssetsLoadsToTheEmbeddedScene) {

@@ -203,11 +203,11 @@ TEST_F(Cli, ScenesListsEachBuiltInWithItsDescription) {
   CommandResult r = run("scenes");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::string lines = "\n" + r.output;
-  for (const char* name : {"bump", "default", "dense", "env", "highlight", "mip-plane", "spheres",
-                           "teapot", "whitted", "zfight"})
+  for (const char* name : {"bump", "default", "dense", "env", "highlight", "mip-plane", "shadows",
+                           "spheres", "teapot", "whitted", "zfight"})
     EXPECT_NE(lines.find(std::string("\n") + name + " "), std::string::npos) << name;
   EXPECT_NE(r.output.find("teapot     The Utah teapot"), std::string::npos) << r.output;
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 10) << "one line each, no more";
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 11) << "one line each, no more";
 }
 
 // The copy a user makes renders exactly as the built-in it came from.
@@ -349,11 +349,12 @@ TEST_F(Cli, EnvOnAndOffRenderTheStudioScene) {
 // Every on/off switch of every command reads the same name table: one
 // message, one exit code.
 TEST_F(Cli, BadSwitchValuesGetOneMessage) {
-  for (std::string command : {"render env -o " + out("a.png") + " --env maybe",
-                              "render bump -o " + out("a.png") + " --bump maybe",
-                              "trace -o " + out("a.png") + " --size 8x8 --shadows maybe",
-                              "trace -o " + out("a.png") + " --size 8x8 --fresnel maybe",
-                              "compare -o " + out("a.png") + " --size 8x8 --shadows maybe"}) {
+  for (std::string command :
+       {"render env -o " + out("a.png") + " --env maybe",
+        "render bump -o " + out("a.png") + " --bump maybe",
+        "trace -o " + out("a.png") + " --size 8x8 --shadows maybe",
+        "trace -o " + out("a.png") + " --size 8x8 --fresnel maybe",
+        "compare -o " + out("a.png") + " --size 8x8 --reference-shadows maybe"}) {
     CommandResult r = run(command);
     EXPECT_EQ(r.exitCode, 2) << command << "\n" << r.output;
     std::string option = command.substr(command.rfind(" --") + 1);
@@ -363,6 +364,40 @@ TEST_F(Cli, BadSwitchValuesGetOneMessage) {
         << r.output;
     EXPECT_EQ(filesLeft(), 0u) << command;
   }
+}
+
+// Bad shadow options: exit 2, a message naming the option and the allowed
+// range, no image. 20000 is above lavapipe's 16384 (checked by the renderer).
+TEST_F(Cli, BadShadowOptionsNameTheOptionAndRange) {
+  struct Case {
+    std::string arguments, expected;
+  };
+  for (const Case& c :
+       {Case{"--shadows soft", "--shadows 'soft': expected one of off, hard, pcf3, pcf5"},
+        Case{"--shadow-size 0", "--shadow-size 0: expected a map size from 1"},
+        Case{"--shadow-size -8", "--shadow-size -8: expected a map size from 1"},
+        Case{"--shadow-size 20000", "--shadow-size 20000: expected 1..16384"},
+        Case{"--shadow-bias -1", "--shadow-bias -1: expected 0 to 64 texels"},
+        Case{"--shadow-slope-bias 65", "--shadow-slope-bias 65: expected 0 to 64 texels"},
+        Case{"--shadow-normal-offset -0.5", "--shadow-normal-offset -0.5: expected 0 to 64"}}) {
+    CommandResult r = run("render shadows --size 16x16 -o " + out("a.png") + " " + c.arguments);
+    EXPECT_EQ(r.exitCode, 2) << c.arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.arguments << "\n" << r.output;
+    EXPECT_EQ(filesLeft(), 0u) << c.arguments;
+  }
+}
+
+// A scene file's shadow fields are checked like every other field.
+TEST_F(Cli, BadShadowFieldsInASceneFile) {
+  std::string scene = out("bad-shadows.json");
+  std::ofstream(scene)
+      << R"({"lights": [{"type": "directional", "direction": [0, -1, 0], "shadows": "yes"}],)"
+      << R"( "objects": []})";
+  CommandResult r = run("render " + scene + " --size 16x16 -o " + out("a.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("lights[0].shadows: expected true or false"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(out("a.png")));
 }
 
 TEST_F(Cli, TraceEpsilonIsValidated) {

@@ -11,6 +11,7 @@
 #include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/look_options.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/split_screen.h"
@@ -33,7 +34,8 @@ struct CompareOptions {
   std::string modes = "flat,gouraud,phong,blinn-phong";
   std::string reference = "trace";
   uint32_t samplesPerPixel = 4;
-  std::string shadows = "on";
+  std::string referenceShadows = "on";
+  ShadowOptions shadows;  // of the rasterised views
 };
 
 // The heatmaps' key: the FLIP ramp from 0 (left) to 1 (right) in a band
@@ -88,8 +90,11 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   checkSamplesPerPixel(options.samplesPerPixel);
   Reference reference = findReference(options.reference, "--reference");
   if (reference.name == "trace")
-    reference = traceReference(options.samplesPerPixel,
-                               parseNamed(kOnOffNames, options.shadows, "--shadows"));
+    reference =
+        traceReference(options.samplesPerPixel,
+                       parseNamed(kOnOffNames, options.referenceShadows, "--reference-shadows"));
+  FrameSettings shadowSettings;
+  options.shadows.apply(shadowSettings);
   std::filesystem::path sheetPath(options.output);
   if (sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
@@ -108,6 +113,9 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     Renderer renderer(*context);
     RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
     settings.splitModels = models;
+    settings.shadows = shadowSettings.shadows;
+    settings.shadowBias = shadowSettings.shadowBias;
+    settings.shadowMapSize = shadowSettings.shadowMapSize;
     split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
     const auto start = std::chrono::steady_clock::now();
     expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
@@ -189,9 +197,12 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str()
       ->check(CLI::Range(1u, 256u));
   command
-      ->add_option("--shadows", options->shadows,
-                   namedHelp("Shadows in the traced reference (off: shading alone)", kOnOffNames))
+      ->add_option("--reference-shadows", options->referenceShadows,
+                   namedHelp("Shadow rays in the traced reference (off, with --shadows off: "
+                             "shading alone)",
+                             kOnOffNames))
       ->capture_default_str();
+  options->shadows.add(command);
   return [options, &global] { return runCompare(*options, global); };
 }
 

@@ -113,6 +113,10 @@ void printTimings(const RenderStats& stats) {
       "wall median %.3f ms, mean %.3f ms, p95 %.3f ms\n",
       device.size(), warmup, median(device), percentile(device, 95.0), median(wall), mean(wall),
       percentile(wall, 95.0));
+  std::vector<double> shadow(stats.shadowMs.begin() + long(warmup), stats.shadowMs.end());
+  if (median(shadow) > 0.0)
+    std::printf("shadow maps: device median %.3f ms of the frame (%u caster draws)\n",
+                median(shadow), stats.shadowDraws);
 }
 
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
@@ -172,6 +176,9 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.depth = depth;
     settings.environment = look.environment;
     settings.textures = look.textures;
+    settings.shadows = look.shadows;
+    settings.shadowBias = look.shadowBias;
+    settings.shadowMapSize = look.shadowMapSize;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);

@@ -1,11 +1,51 @@
 #include "app/look_options.h"
 
 #include <charconv>
+#include <sstream>
 
 #include "app/cli_common.h"
 #include "core/base/errors.h"
 
 namespace shadelab {
+
+void ShadowOptions::add(CLI::App* command) {
+  command
+      ->add_option("--shadows", method,
+                   namedHelp("Shadow maps and their filter (off: no shadows)", kShadowMethodNames))
+      ->capture_default_str();
+  command->add_option("--shadow-size", size, "Shadow map size in texels (square)")
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-bias", bias,
+                   "Constant shadow bias towards the light, in shadow-map texels (0..64)")
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-slope-bias", slopeBias,
+                   "Slope-scaled shadow bias: texels times tan(angle of N and L) (0..64)")
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-normal-offset", normalOffset,
+                   "Normal-offset shadow bias: texels along the normal times sin(angle) (0..64)")
+      ->capture_default_str();
+}
+
+void ShadowOptions::apply(FrameSettings& settings) const {
+  settings.shadows = parseNamed(kShadowMethodNames, method, "--shadows");
+  if (size < 1 || size > 65536)
+    throw InputError("--shadow-size " + std::to_string(size) +
+                     ": expected a map size from 1 to the device's largest 2D image (16384 "
+                     "on lavapipe)");
+  settings.shadowMapSize = uint32_t(size);
+  for (auto [option, value] :
+       {std::pair{"--shadow-bias", bias}, std::pair{"--shadow-slope-bias", slopeBias},
+        std::pair{"--shadow-normal-offset", normalOffset}})
+    if (!(value >= 0.0f && value <= kMaxShadowBias)) {
+      std::ostringstream text;
+      text << option << " " << value << ": expected 0 to " << kMaxShadowBias << " texels";
+      throw InputError(text.str());
+    }
+  settings.shadowBias = {bias, slopeBias, normalOffset};
+}
 
 void addLookOptions(CLI::App* command, LookOptions& options) {
   command
@@ -26,6 +66,7 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
   command->add_flag("--mip-tint", options.mipTint,
                     "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
                     "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
+  options.shadows.add(command);
 }
 
 void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
@@ -34,6 +75,7 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
     settings.textures.filterOverride = parseNamed(kTextureFilterNames, options.filter, "--filter");
   settings.textures.bump = parseNamed(kOnOffNames, options.bump, "--bump");
   settings.textures.mipTint = options.mipTint;
+  options.shadows.apply(settings);
 }
 
 float parseTessellationFactor(const std::string& text) {

@@ -1,20 +1,35 @@
 #pragma once
 // Options that change how a frame looks beyond the shading model, shared by
 // every command that draws with the rasteriser (render, view): --env,
-// --filter, --bump, --mip-tint. The viewer's E, F, B and M keys change the
+// --filter, --bump, --mip-tint, the shadow options. The viewer's E, F, B and M keys change the
 // same FrameSettings fields afterwards.
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "core/scene/shadows.h"
 #include "passes/renderer.h"
 
 namespace shadelab {
+
+// --shadows, --shadow-size and the bias options, as render, compare and view
+// take them; apply() validates what the device does not (the device's
+// limits are checked by Renderer::applyFrameSettings).
+struct ShadowOptions {
+  std::string method{nameOf(kShadowMethodNames, kDefaultShadowMethod)};
+  int64_t size = kDefaultShadowMapSize;
+  float bias = ShadowBias{}.constant;
+  float slopeBias = ShadowBias{}.slope;
+  float normalOffset = ShadowBias{}.normalOffset;
+  void add(CLI::App* command);
+  void apply(FrameSettings& settings) const;  // throws InputError naming the option
+};
 
 struct LookOptions {
   std::string environment = "on";
   std::string filter;  // empty: each material's own sampler
   std::string bump = "on";
   bool mipTint = false;
+  ShadowOptions shadows;  // --shadows, --shadow-size, the bias options
 };
 
 void addLookOptions(CLI::App* command, LookOptions& options);

@@ -25,6 +25,9 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
       {BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT},
+      {BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT},
+      {BINDING_SHADOWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT},
   };
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.bindingCount = uint32_t(std::size(bindings));
@@ -80,9 +83,15 @@ static std::string_view forwardSource(VkShaderStageFlagBits stage) {
 // defines that declare only the varyings the model passes
 // (shaders/forward_vertex.glsl says why) and TEXTURED for the uv and tangent.
 static const ShaderVariant& forwardStage(VkShaderStageFlagBits stage, ShadingModel model,
-                                         bool textured, bool environment) {
+                                         bool textured, bool environment, bool shadows) {
   std::vector<std::string_view> defines;
   if (textured) defines.push_back("TEXTURED");
+  // Flat and Gouraud with shadows pass each light's term on to the fragment
+  // stage, which weighs it by k_shadow (shaders/lighting.glsl says why).
+  bool lightedEarlier = model == ShadingModel::Flat || model == ShadingModel::Gouraud;
+  if (shadows && lightedEarlier &&
+      !(model == ShadingModel::Flat && stage == VK_SHADER_STAGE_VERTEX_BIT))
+    defines.push_back("SHADOW_VARYINGS");
   if (model == ShadingModel::Gouraud) {
     defines.push_back("VERTEX_LIGHTING");
     if (environment) defines.push_back("ENVIRONMENT_VARYINGS");
@@ -114,7 +123,7 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
 }
 
 void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
-                          bool environment) {
+                          bool environment, ShadowMethod shadows) {
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool texturedVariant : {false, true})
       for (bool blendedVariant : {false, true}) {
@@ -123,7 +132,8 @@ void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured
                            .target = target,
                            .textured = texturedVariant,
                            .blended = blendedVariant,
-                           .environment = environment};
+                           .environment = environment,
+                           .shadows = shadows};
         bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
         if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
       }
@@ -134,15 +144,20 @@ void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured
 }
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
-  const auto& [model, lights, target, textured, blended, wireframe, environment] = key;
+  const auto& [model, lights, target, textured, blended, wireframe, environment, shadows] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
     int32_t directionalLights;
     VkBool32 attenuated;
     VkBool32 environment;
-  } constants{int32_t(model), int32_t(lights.point), int32_t(lights.directional),
-              lights.attenuated ? VK_TRUE : VK_FALSE, environment ? VK_TRUE : VK_FALSE};
+    int32_t shadowFilter;
+  } constants{int32_t(model),
+              int32_t(lights.point),
+              int32_t(lights.directional),
+              lights.attenuated ? VK_TRUE : VK_FALSE,
+              environment ? VK_TRUE : VK_FALSE,
+              int32_t(shadows)};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -151,6 +166,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
       {/* constantID= */ SPEC_ATTENUATED_POINT_LIGHTS, offsetof(decltype(constants), attenuated),
        4},
       {/* constantID= */ SPEC_ENVIRONMENT, offsetof(decltype(constants), environment), 4},
+      {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(decltype(constants), shadowFilter), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};
@@ -167,7 +183,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   // Flat shading needs the whole triangle to find its geometric normal. The
   // stages come in variants that differ only in the varyings they pass.
   auto add = [&](VkShaderStageFlagBits stage) {
-    const ShaderVariant& variant = forwardStage(stage, model, textured, environment);
+    const ShaderVariant& variant =
+        forwardStage(stage, model, textured, environment, shadows != ShadowMethod::Off);
     addStage(stage, modules_.at(std::string(variant.name)).get());
   };
   add(VK_SHADER_STAGE_VERTEX_BIT);
@@ -276,7 +293,8 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardF
                                        .target = frame.target,
                                        .textured = draw.textured,
                                        .blended = draw.transparent,
-                                       .environment = frame.environment});
+                                       .environment = frame.environment,
+                                       .shadows = frame.shadows});
       assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
       bound = variant;

@@ -2,7 +2,8 @@
 // Forward shading pass: draws the visible objects of a GpuScene with the
 // Phong illumination equation under one of the shading models.
 // Reads: set 0 = FrameData (uniform) + ObjectData[] (storage) + the environment
-// cube (environment term: kr, kt and ior per draw), vertex/index buffers;
+// cube (environment term: kr, kt and ior per draw) + ShadowData (uniform) and
+// the shadow maps (ShadowPass's array, with shadows on), vertex/index buffers;
 // textured draws also set 1 (their material's textures).
 // Textured draws use their own variants (the TEXTURED rows of the shader
 // table): they read the uv and tangent attributes, which the others do not
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "core/scene/shading.h"
+#include "core/scene/shadows.h"
 #include "core/vulkan/context.h"
 #include "core/vulkan/depth.h"
 #include "core/vulkan/gpu_scene.h"
@@ -40,6 +42,8 @@ struct ForwardVariant {
   bool blended = false;      // transparent draws: "over" blending, no depth writes
   bool wireframe = false;    // polygonMode LINE, depth-biased towards the eye
   bool environment = false;  // SPEC_ENVIRONMENT: reflection and refraction of the cube
+  ShadowMethod shadows =
+      ShadowMethod::Off;  // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
   auto operator<=>(const ForwardVariant&) const = default;
 };
 
@@ -49,7 +53,8 @@ struct ForwardFrame {
   VkDescriptorSet frameSet = VK_NULL_HANDLE;  // set 0
   // Set 1 per DrawItem::material, for the frame's filter (SceneTextures).
   std::span<const VkDescriptorSet> materialSets;
-  bool environment = false;  // the variants with the environment term
+  bool environment = false;                  // the variants with the environment term
+  ShadowMethod shadows = ShadowMethod::Off;  // the variants that look the shadow maps up
   // Applied to the textured draws' TEXTURE_* push-constant flags per draw.
   bool bump = true;      // false: normal and height maps ignored
   bool mipTint = false;  // diffuse texels tinted by mip level
@@ -67,7 +72,7 @@ class ForwardPass {
   // transparent draws use; `environment` selects the variants with the
   // environment term.
   void prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
-               bool environment = false);
+               bool environment = false, ShadowMethod shadows = ShadowMethod::Off);
   // Records `draws` (visibleDraws: opaque first, then transparent ones, which
   // blend over what is drawn) inside an active dynamic-rendering scope; sets
   // its own viewport.

@@ -37,11 +37,12 @@ Renderer::Renderer(const Context& context)
       forward_(context, kColorFormat),
       textures_(context, forward_.materialSetLayout()),
       skybox_(context, kColorFormat, forward_.descriptorSetLayout()),
+      shadow_(context),
       environmentBuilder_(context),
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
-  VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
+  VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kFramesInFlight},
                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight},
-                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFramesInFlight}};
+                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = kFramesInFlight;
   poolInfo.poolSizeCount = uint32_t(std::size(sizes));
@@ -78,7 +79,8 @@ void Renderer::createFrame(Frame& frame) {
 
   VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  queryInfo.queryCount = 3;  // scene start, scene end, end of the command buffer
+  // Scene start, scene end, end of the command buffer, end of the shadow pass.
+  queryInfo.queryCount = 4;
   VkQueryPool queries = VK_NULL_HANDLE;
   VK_CHECK(vkCreateQueryPool(device, &queryInfo, nullptr, &queries));
   frame.timestamps = QueryPool(device, queries);
@@ -91,9 +93,32 @@ void Renderer::createFrame(Frame& frame) {
   setInfo.descriptorSetCount = 1;
   setInfo.pSetLayouts = &layout;
   VK_CHECK(vkAllocateDescriptorSets(device, &setInfo, &frame.set));
+  frame.shadowData = Buffer(context_, sizeof(gpu::ShadowData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                            MemoryUse::HostVisible);
   // Every binding is written now: lavapipe crashes on never-written descriptors.
   ensureObjectCapacity(frame, 64);
   writeEnvironmentDescriptor(frame);
+  writeShadowMapDescriptor(frame);
+  VkDescriptorBufferInfo shadowInfo{frame.shadowData.get(), 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = frame.set;
+  write.dstBinding = BINDING_SHADOWS;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  write.pBufferInfo = &shadowInfo;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+void Renderer::writeShadowMapDescriptor(const Frame& frame) const {
+  VkDescriptorImageInfo image{shadow_.sampler(), shadow_.view(),
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = frame.set;
+  write.dstBinding = BINDING_SHADOW_MAP;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &image;
+  vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
 }
 
 void Renderer::writeEnvironmentDescriptor(const Frame& frame) const {
@@ -179,13 +204,14 @@ void Renderer::retire(Frame& frame, RenderStats& stats) {
   VkFence fence = frame.fence;
   VK_CHECK(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
   double completion = nowMs();
-  uint64_t ticks[3] = {};
-  VK_CHECK(vkGetQueryPoolResults(context_.device(), frame.timestamps, 0, 3, sizeof(ticks), ticks,
+  uint64_t ticks[4] = {};
+  VK_CHECK(vkGetQueryPoolResults(context_.device(), frame.timestamps, 0, 4, sizeof(ticks), ticks,
                                  sizeof(uint64_t),
                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   double period = context_.properties().limits.timestampPeriod;  // ns per tick
   stats.deviceMs.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
   stats.frameDeviceMs.push_back(double(ticks[2] - ticks[0]) * period * 1e-6);
+  stats.shadowMs.push_back(double(ticks[3] - ticks[0]) * period * 1e-6);
   stats.wallMs.push_back(completion - lastCompletion_);
   lastCompletion_ = completion;
   frame.pending = false;
@@ -254,6 +280,23 @@ void Renderer::validate(const GpuScene& scene, const FrameSettings& settings) co
   if (settings.splitModels.size() > settings.width)
     throw InputError("split screen: more views than pixel columns");
   checkDepthSupport(settings.depth);
+  if (settings.shadows != ShadowMethod::Off) {
+    if (settings.shadowMapSize == 0 || settings.shadowMapSize > maxSize)
+      throw InputError("--shadow-size " + std::to_string(settings.shadowMapSize) +
+                       ": expected 1.." + std::to_string(maxSize) +
+                       " (this device's largest 2D image)");
+    uint32_t maxLayers = context_.properties().limits.maxImageArrayLayers;
+    if (scene.shadowLayers > maxLayers)
+      throw InputError("shadows: the scene's lights need " + std::to_string(scene.shadowLayers) +
+                       " shadow-map layers, this device offers " + std::to_string(maxLayers));
+    const ShadowBias& bias = settings.shadowBias;
+    for (auto [name, value] :
+         {std::pair{"--shadow-bias", bias.constant}, std::pair{"--shadow-slope-bias", bias.slope},
+          std::pair{"--shadow-normal-offset", bias.normalOffset}})
+      if (!(value >= 0.0f && value <= kMaxShadowBias))
+        throw InputError(std::string(name) + " " + std::to_string(value) + ": expected 0.." +
+                         std::to_string(int(kMaxShadowBias)) + " texels");
+  }
   if (scene.anyTextured) textures_.checkFilter(settings.textures.filterOverride);
 }
 
@@ -262,7 +305,14 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   if (scene.anyTextured) textures_.prepareFilter(settings.textures.filterOverride);
   TargetLayout layout{settings.msaaSamples, settings.depth};
   bool environment = settings.environment && sceneEnvironment_;
-  forward_.prepare(scene.lights, layout, scene.anyTextured, scene.anyTransparent, environment);
+  // No map to draw: the variants without shadows (the images of before them).
+  ShadowMethod shadows = scene.shadowLayers > 0 ? settings.shadows : ShadowMethod::Off;
+  forward_.prepare(scene.lights, layout, scene.anyTextured, scene.anyTransparent, environment,
+                   shadows);
+  if (shadows != ShadowMethod::Off && shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
+    context_.waitIdle();  // no frame in flight may hold the descriptors being re-pointed
+    for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
+  }
   if (environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
   settings_ = settings;
@@ -305,17 +355,22 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   // memcpy forbids even for zero bytes: UBSan reported it).
   if (!objects.empty())
     std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
+  bool shadowed = settings.shadows != ShadowMethod::Off && scene.shadowLayers > 0;
   ForwardFrame forwardFrame{.target = target_.layout,
                             .frameSet = frame.set,
                             .environment = settings.environment && sceneEnvironment_,
+                            .shadows = shadowed ? settings.shadows : ShadowMethod::Off,
                             .bump = settings.textures.bump,
                             .mipTint = settings.textures.mipTint};
   if (scene.anyTextured)
     forwardFrame.materialSets = textures_.materialSets(settings.textures.filterOverride);
 
   VkCommandBuffer cmd = frame.cmd;
-  vkCmdResetQueryPool(cmd, frame.timestamps, 0, 3);
+  vkCmdResetQueryPool(cmd, frame.timestamps, 0, 4);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, frame.timestamps, 0);
+  stats.shadowDraws = 0;
+  if (shadowed) recordShadows(cmd, frame, scene, source, view, projection, stats);
+  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 3);
 
   beginRendering(cmd, source, width, height);
   // Split screen: equal columns, one shading model each, one camera.
@@ -340,6 +395,19 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
+}
+
+void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene,
+                             const Scene& source, const glm::mat4& view,
+                             const glm::mat4& projection, RenderStats& stats) {
+  // The map is fitted to the camera's view: with split columns, the whole frame's.
+  ShadowFrame shadows = makeShadowFrame(source, scene, view, projection, settings_.shadowBias,
+                                        settings_.shadowMapSize);
+  std::memcpy(frame.shadowData.mapped(), &shadows.data, sizeof(shadows.data));
+  std::vector<glm::mat4> transforms;
+  transforms.reserve(source.objects.size());
+  for (const Object& object : source.objects) transforms.push_back(object.transform);
+  stats.shadowDraws = shadow_.record(cmd, scene, transforms, shadows.worldToLightClip);
 }
 
 void Renderer::recordReadback(const Buffer& readback) {

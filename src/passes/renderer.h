@@ -18,6 +18,7 @@
 #include "passes/environment_builder.h"
 #include "passes/forward_pass.h"
 #include "passes/scene_textures.h"
+#include "passes/shadow_pass.h"
 #include "passes/skybox_pass.h"
 
 namespace shadelab {
@@ -53,6 +54,12 @@ struct FrameSettings {
   // environment term and the skybox; off (or no cube) renders with the
   // background colour only.
   bool environment = true;
+  // Shadow maps: the filter (off: no map is drawn or read) and the bias are
+  // per-frame; the map size is a resource size, like width and height
+  // (changing it rebuilds the map, waiting for the device).
+  ShadowMethod shadows = ShadowMethod::Off;
+  ShadowBias shadowBias;
+  uint32_t shadowMapSize = kDefaultShadowMapSize;
 };
 
 // renderToImage: one scene, uploaded once, drawn `frames` times.
@@ -65,10 +72,12 @@ struct RenderStats {
   // Per frame, from the scene's start to the end of everything recorded after
   // it (a readback; the viewer's blit, overlay and screenshot copy).
   std::vector<double> frameDeviceMs;
-  std::vector<double> wallMs;  // per frame, interval between successive frame completions
-  uint64_t triangles = 0;      // submitted per frame (after culling)
-  uint32_t drawCalls = 0;      // submitted per frame (after culling)
-  uint32_t culledDraws = 0;    // objects outside the view frustum, not drawn
+  std::vector<double> wallMs;    // per frame, interval between successive frame completions
+  std::vector<double> shadowMs;  // per frame, the shadow pass's share of deviceMs (0 without)
+  uint32_t shadowDraws = 0;      // caster draws per frame, summed over the maps' layers
+  uint64_t triangles = 0;        // submitted per frame (after culling)
+  uint32_t drawCalls = 0;        // submitted per frame (after culling)
+  uint32_t culledDraws = 0;      // objects outside the view frustum, not drawn
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;
@@ -153,6 +162,7 @@ class Renderer {
     QueryPool timestamps;
     Buffer frameData;   // FrameData, host-visible
     Buffer objectData;  // ObjectData[], host-visible
+    Buffer shadowData;  // ShadowData, host-visible
     uint32_t objectCapacity = 0;
     VkDescriptorSet set = VK_NULL_HANDLE;
     bool pending = false;  // submitted, fence not yet waited on
@@ -182,11 +192,16 @@ class Renderer {
   // it; call with no frame in flight.
   void bindEnvironment(const Scene& scene, bool enabled);
   void writeEnvironmentDescriptor(const Frame& frame) const;
+  void writeShadowMapDescriptor(const Frame& frame) const;
+  // The shadow pass of a frame (with shadows on and some light casting).
+  void recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene, const Scene& source,
+                     const glm::mat4& view, const glm::mat4& projection, RenderStats& stats);
 
   const Context& context_;
   ForwardPass forward_;
   SceneTextures textures_;
   SkyboxPass skybox_;
+  ShadowPass shadow_;
   EnvironmentBuilder environmentBuilder_;
   EnvironmentCube placeholderEnvironment_;
   EnvironmentCube sceneEnvironment_;    // empty when the scene has none or it is off

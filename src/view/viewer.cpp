@@ -298,6 +298,7 @@ bool Viewer::drawFrame() {
   renderer_.waitForFrame(stats);
   pushBounded(deviceMs_, stats.deviceMs);
   pushBounded(frameDeviceMs_, stats.frameDeviceMs);
+  pushBounded(shadowMs_, stats.shadowMs);
   pushBounded(wallMs_, stats.wallMs);
   finishSlotWork(slotWork_[slot]);
 
@@ -367,6 +368,7 @@ void Viewer::reportKeyLatency(double presented) {
   renderer_.finishFrames(stats);
   pushBounded(deviceMs_, stats.deviceMs);
   pushBounded(frameDeviceMs_, stats.frameDeviceMs);
+  pushBounded(shadowMs_, stats.shadowMs);
   pushBounded(wallMs_, stats.wallMs);
   double finished = nowSeconds();
   for (const auto& [name, handled] : keysAwaitingFrame_)

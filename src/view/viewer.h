@@ -123,7 +123,7 @@ class Viewer {
   std::optional<MouseButton> dragging_;
   glm::vec2 lastMouse_{0.0f};
 
-  std::deque<double> deviceMs_, frameDeviceMs_, wallMs_;  // the last 120 frames
+  std::deque<double> deviceMs_, frameDeviceMs_, wallMs_, shadowMs_;  // the last 120 frames
   uint64_t framesDrawn_ = 0;
   uint64_t submittedTriangles_ = 0;  // last frame, after frustum culling, per view
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;

@@ -126,6 +126,13 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
            if (v.applyTextureOptions(next, "texture filter: " + name)) return;
          }
        }},
+      {'S', "S", "shadow maps: off, hard, pcf3, pcf5 in turn",
+       [](Viewer& v) {
+         FrameSettings next = v.settings_;
+         next.shadows = ShadowMethod((int(next.shadows) + 1) % int(kShadowMethodNames.size()));
+         if (v.applySettings(next))
+           v.say("shadows: " + std::string(nameOf(kShadowMethodNames, next.shadows)));
+       }},
       {'M', "M", "mip-level tint on / off",
        [](Viewer& v) {
          TextureOptions next = v.settings_.textures;
@@ -242,6 +249,10 @@ OverlayText Viewer::overlayText() const {
   text.status.push_back("device: scene " + formatMs(median(device)) + ", frame " +
                         formatMs(median(frameDevice)) + "; wall " + formatMs(median(wall)) +
                         " (medians of " + std::to_string(device.size()) + ")");
+  std::vector<double> shadowMs(shadowMs_.begin(), shadowMs_.end());
+  text.status.push_back("shadows " + std::string(nameOf(kShadowMethodNames, settings_.shadows)) +
+                        ", " + std::to_string(settings_.shadowMapSize) +
+                        "^2 maps: " + formatMs(median(shadowMs)) + " of the scene's device time");
   text.status.push_back("triangles " + withThousands(submittedTriangles_ * views) + " submitted" +
                         (views > 1 ? " (" + std::to_string(views) + " views)" : "") + ", " +
                         withThousands(gpuScene_.triangles) + " in the scene");

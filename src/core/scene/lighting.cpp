@@ -1,6 +1,7 @@
 #include "core/scene/lighting.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace shadelab {
@@ -46,7 +47,9 @@ glm::vec3 lightTerm(glm::vec3 N, glm::vec3 V, glm::vec3 L, float attenuation, gl
 }  // namespace
 
 glm::vec3 illuminate(glm::vec3 ambient, std::span<const Light> lights, glm::vec3 position,
-                     glm::vec3 normal, const Material& material, bool blinn) {
+                     glm::vec3 normal, const Material& material, bool blinn,
+                     std::span<const float> shadowCoefficients) {
+  assert(shadowCoefficients.empty() || shadowCoefficients.size() == lights.size());
   // Zero-length, NaN or infinite normals (bad input) light as ambient only,
   // never NaN: a NaN length fails both comparisons.
   const float lengthN2 = glm::dot(normal, normal);
@@ -56,7 +59,8 @@ glm::vec3 illuminate(glm::vec3 ambient, std::span<const Light> lights, glm::vec3
   glm::vec3 color = ambient * material.ka;
   // Lights in any order, each by its type (the shader relies on makeFrameData
   // putting point lights first; the equation does not care).
-  for (const Light& light : lights) {
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const Light& light = lights[i];
     glm::vec3 L;
     float attenuation = 1.0f;
     if (light.type == LightType::Point) {
@@ -70,7 +74,10 @@ glm::vec3 illuminate(glm::vec3 ambient, std::span<const Light> lights, glm::vec3
     } else {
       L = safeNormalize(-light.direction);
     }
-    color += lightTerm(N, V, L, attenuation, light.intensity, material, blinn);
+    glm::vec3 term = lightTerm(N, V, L, attenuation, light.intensity, material, blinn);
+    // k_shadow,i scales the light's whole term, as shaders/lighting.glsl does.
+    if (!shadowCoefficients.empty()) term *= shadowCoefficients[i];
+    color += term;
   }
   return color;
 }

@@ -2,7 +2,8 @@
 // The Phong illumination equation on the CPU, the twin of
 // shaders/lighting.glsl with the same edge cases, so tests can check GPU
 // pixels against it and the CPU reference tracer can light with it:
-//   I = Ia ka + sum_i f_att,i Ip,i [kd (N.L_i) + ks (R_i.V)^n],  f_att = 1/(a + b d + c d^2)
+//   I = Ia ka + sum_i k_shadow,i f_att,i Ip,i [kd (N.L_i) + ks (R_i.V)^n],  f_att = 1/(a + b d + c
+//   d^2)
 // Blinn-Phong replaces (R.V)^n with (N.H)^n, H = normalize(L + V).
 #include <glm/glm.hpp>
 #include <span>
@@ -16,9 +17,13 @@ namespace shadelab {
 // each lights by its type, in any order, all of them (the GPU's MAX_LIGHTS
 // limit is the caller's business). A directional light's direction need not
 // be unit length. The normal need not be unit length either; a zero, NaN or
-// infinite one gives ambient only.
+// infinite one gives ambient only. `shadowCoefficients`: k_shadow per light
+// (0..1, parallel to `lights`), scaling its whole term,
+//   I = Ia ka + sum_i k_shadow,i f_att,i Ip,i [...];
+// empty means every light reaches the point (k_shadow = 1).
 glm::vec3 illuminate(glm::vec3 ambient, std::span<const Light> lights, glm::vec3 position,
-                     glm::vec3 normal, const Material& material, bool blinn);
+                     glm::vec3 normal, const Material& material, bool blinn,
+                     std::span<const float> shadowCoefficients = {});
 
 // A world-space light as seen from `view` (a rigid transform): a point
 // light's position moved, a directional light's direction turned and made

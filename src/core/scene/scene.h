@@ -65,6 +65,7 @@ struct Light {
   glm::vec3 direction{0.0f, -1.0f, 0.0f};   // directional lights: the direction light travels
   glm::vec3 intensity{1.0f};                // Ip per RGB channel
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f};  // f_att = 1 / (a + b d + c d^2)
+  bool shadows = true;  // casts shadows (a shadow map) when the frame's shadow method is on
 };
 
 // Texture sampling, per texture slot of a material (glTF samplers map here).
@@ -142,6 +143,8 @@ struct Object {
   uint32_t mesh = 0;  // index into Scene::meshes
   glm::mat4 transform{1.0f};
   Material material;
+  bool castsShadows = true;     // drawn into the shadow maps
+  bool receivesShadows = true;  // its lighting looks the shadow maps up
 };
 
 struct Scene {

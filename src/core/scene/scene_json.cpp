@@ -54,6 +54,8 @@
 //             "attenuation" [a, b, c] for f_att = 1 / (a + b d + c d^2): all >= 0, not all 0,
 //             default [1, 0, 0]. A directional light needs "direction" [x, y, z], the way its
 //             light travels (non-zero). "intensity" Ip: [r, g, b] or a number, default 1.
+//             "shadows": true (default) or false: whether the light casts shadows when the
+//             frame draws them (--shadows).
 // materials   name -> {"ka", "kd", "ks": [r, g, b] or a number >= 0, "shininess": n >= 0},
 //             the Phong terms of I = Ia ka + sum f_att Ip [kd (N.L) + ks (R.V)^n];
 //             defaults ka 0.1, kd 0.7, ks 0.3, shininess 32. Also "reflectivity" kr and
@@ -67,6 +69,8 @@
 //             default the material defaults), "transform" and "children". An object
 //             without "shape" is a group: it draws nothing, takes no material and must have
 //             a non-empty "children" array. Shaped objects may have children too.
+//             Shaped objects may have "casts_shadows" and "receives_shadows" (true or false,
+//             default true: in the shadow maps, and darkened by them); glTF objects do both.
 //             An object with "gltf" instead of "shape" places a glTF 2.0 file (.gltf or
 //             .glb, its path relative to this scene file) under the object's transform:
 //             {"gltf": "models/x.gltf", "transform": [{"scale": 2}]}. Its meshes,
@@ -214,17 +218,18 @@ Light parseLight(const Field& field) {
   Light light;
   if (auto f = field.optional("type")) light.type = f->choose("light type", kLightTypeNames);
   if (light.type == LightType::Point) {
-    field.expectObject({"type", "position", "intensity", "attenuation"});
+    field.expectObject({"type", "position", "intensity", "attenuation", "shadows"});
     light.position = field.required("position", "the point light's position [x, y, z]").vec3();
     if (auto f = field.optional("attenuation")) light.attenuation = parseAttenuation(*f);
   } else {
-    field.expectObject({"type", "direction", "intensity"});
+    field.expectObject({"type", "direction", "intensity", "shadows"});
     Field direction = field.required("direction", "the direction the light travels [x, y, z]");
     light.direction = direction.vec3();
     if (glm::length(light.direction) == 0.0f)
       direction.fail("zero-length direction", "a non-zero vector");
   }
   if (auto f = field.optional("intensity")) light.intensity = f->colour();
+  if (auto f = field.optional("shadows")) light.shadows = f->boolean();
   return light;
 }
 
@@ -459,6 +464,8 @@ class ObjectBuilder {
     } else if (spec) {
       allowed.push_back("material");
       allowed.push_back("crease_angle");
+      allowed.push_back("casts_shadows");
+      allowed.push_back("receives_shadows");
       allowed.insert(allowed.end(), spec->fields.begin(), spec->fields.end());
     }
     field.expectObject(allowed);
@@ -473,7 +480,10 @@ class ObjectBuilder {
       ShapeDesc shape = parseShape(field, *spec);
       Material surface =
           material(field, name);  // checked before the (possibly large) mesh is built
-      scene_.objects.push_back({name, mesh(shape), world, surface});
+      Object object{name, mesh(shape), world, surface};
+      if (auto f = field.optional("casts_shadows")) object.castsShadows = f->boolean();
+      if (auto f = field.optional("receives_shadows")) object.receivesShadows = f->boolean();
+      scene_.objects.push_back(object);
     }
 
     std::optional<Field> children = field.optional("children");

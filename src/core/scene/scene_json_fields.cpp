@@ -136,6 +136,11 @@ uint32_t Field::integer(uint32_t min, uint32_t max, const std::string& meaning) 
   return uint32_t(value);
 }
 
+bool Field::boolean() const {
+  if (!json().is_boolean()) wrongType("true or false");
+  return json().get<bool>();
+}
+
 std::string Field::string() const {
   if (!json().is_string()) wrongType("a string");
   return json().get<std::string>();

@@ -51,6 +51,7 @@ class Field {
   // An integral number in min..max; `meaning` says what it counts.
   uint32_t integer(uint32_t min, uint32_t max, const std::string& meaning) const;
   std::string string() const;
+  bool boolean() const;            // true or false
   glm::vec3 vec3() const;          // [x, y, z]
   glm::vec3 vec3OrNumber() const;  // [x, y, z], or n meaning [n, n, n]
   glm::vec3 colour() const;        // a number (grey) or [r, g, b], all >= 0

@@ -204,6 +204,8 @@ void Context::createDevice(const ContextOptions& options) {
   features.features.samplerAnisotropy = features_.samplerAnisotropy;
   features.features.fillModeNonSolid = features_.fillModeNonSolid;
   features.features.pipelineStatisticsQuery = features_.pipelineStatisticsQuery;
+  features.features.depthClamp =
+      features_.depthClamp;  // shadow casters before the light's near plane
 
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
   info.queueCreateInfoCount = 1;

@@ -29,6 +29,9 @@ static_assert(offsetof(gpu::DrawConstants, object) == 48);
 static_assert(offsetof(gpu::DrawConstants, texturing) == 64);
 static_assert(offsetof(gpu::DrawConstants, optics) == 80);
 static_assert(sizeof(gpu::DrawConstants) == 96);  // within the 128 bytes Vulkan guarantees
+static_assert(offsetof(gpu::ShadowData, bias) == 16 * MAX_LIGHTS);
+static_assert(offsetof(gpu::ShadowData, eyeToLight) == 16 * MAX_LIGHTS + 16);
+static_assert(sizeof(gpu::ShadowData) == 16 * MAX_LIGHTS + 16 + 64 * MAX_SHADOW_VIEWS);
 static_assert(sizeof(gpu::SkyParameters) == 96);
 static_assert(offsetof(gpu::SkyParameters, face) == 80);
 static_assert(sizeof(gpu::SkyboxConstants) == 80);
@@ -113,7 +116,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
                    (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
                    (material.heightMap.present() ? TEXTURE_HEIGHT : 0);
-    draw.constants.object = glm::ivec4(int(i), maps, 0, 0);
+    draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0, 0);
+    draw.castsShadows = object.castsShadows;
     draw.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, 0.0f);
     draw.constants.optics =
         glm::vec4(material.reflectivity, material.transparency, material.ior, 0.0f);
@@ -123,8 +127,17 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     draw.transparent = material.transparency > 0.0f;
     gpuScene.anyTransparent |= draw.transparent;
     gpuScene.anyTextured |= draw.textured;
+    gpuScene.bounds = i == 0 ? draw.worldBounds : unite(gpuScene.bounds, draw.worldBounds);
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
+  }
+  std::vector<uint32_t> order = gpuLightOrder(scene);
+  gpuScene.shadowFirstLayer.fill(-1);
+  for (size_t slot = 0; slot < order.size(); ++slot) {
+    const Light& light = scene.lights[order[slot]];
+    if (!light.shadows) continue;
+    gpuScene.shadowFirstLayer[slot] = int32_t(gpuScene.shadowLayers);
+    gpuScene.shadowLayers += light.type == LightType::Point ? 6 : 1;
   }
   return gpuScene;
 }
@@ -165,6 +178,15 @@ LightLayout lightLayoutOf(const Scene& scene) {
   return layout;
 }
 
+std::vector<uint32_t> gpuLightOrder(const Scene& scene) {
+  std::vector<uint32_t> order;
+  uint32_t count = lightLayoutOf(scene).total();
+  for (LightType type : {LightType::Point, LightType::Directional})
+    for (uint32_t i = 0; i < count; ++i)
+      if (scene.lights[i].type == type) order.push_back(i);
+  return order;
+}
+
 gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
                              const glm::mat4& projection) {
   gpu::FrameData frame{};
@@ -182,6 +204,35 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
     out.position = point ? glm::vec4(light.position, 1.0f) : glm::vec4(-light.direction, 0.0f);
     out.intensity = glm::vec4(light.intensity, 0.0f);
     out.attenuation = glm::vec4(light.attenuation, 0.0f);
+  }
+  return frame;
+}
+
+ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const glm::mat4& view,
+                            const glm::mat4& projection, const ShadowBias& bias, uint32_t mapSize) {
+  ShadowFrame frame;
+  frame.worldToLightClip.resize(gpuScene.shadowLayers);
+  frame.data.bias = glm::vec4(bias.constant, bias.slope, bias.normalOffset, 0.0f);
+  glm::mat4 eyeToWorld = glm::inverse(view);
+  std::vector<uint32_t> order = gpuLightOrder(scene);
+  // A PCF5 tap reaches 2 texels out (and a bias a few more): a point
+  // light's faces overlap by that much, so taps at an edge stay in the face.
+  constexpr float kCubeMarginTexels = 4.0f;
+  for (size_t slot = 0; slot < order.size(); ++slot) {
+    int32_t first = gpuScene.shadowFirstLayer[slot];
+    frame.data.lights[slot] = glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);
+    if (first < 0) continue;
+    const Light& light = scene.lights[order[slot]];
+    ShadowView shadowView =
+        light.type == LightType::Point
+            ? pointShadowView(light, gpuScene.bounds, mapSize, kCubeMarginTexels)
+            : directionalShadowView(light, gpuScene.bounds, projection * view, mapSize);
+    frame.data.lights[slot] =
+        glm::vec4(float(first), shadowView.texelSize, 1.0f / float(mapSize), 0.0f);
+    for (size_t face = 0; face < shadowView.viewProjection.size(); ++face) {
+      frame.worldToLightClip[size_t(first) + face] = shadowView.viewProjection[face];
+      frame.data.eyeToLight[size_t(first) + face] = shadowView.viewProjection[face] * eyeToWorld;
+    }
   }
   return frame;
 }

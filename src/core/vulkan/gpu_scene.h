@@ -2,10 +2,12 @@
 // A scene's geometry on the device (one vertex and one index buffer for all
 // meshes) and the per-frame data the shaders read, built from the scene and
 // the camera.
+#include <array>
 #include <compare>
 #include <vector>
 
 #include "core/scene/scene.h"
+#include "core/scene/shadows.h"
 #include "core/vulkan/resources.h"
 #include "interface.h"
 
@@ -25,6 +27,7 @@ struct DrawItem {
   uint32_t material = 0;     // textured: which material's set 1 it binds (passes/scene_textures)
   Bounds worldBounds;        // the mesh's box, transformed: what culling tests
   bool transparent = false;  // blended after the opaque draws, back to front
+  bool castsShadows = true;  // drawn into the shadow maps
 };
 
 // How many lights of each kind the shaders loop over: specialization
@@ -40,6 +43,8 @@ struct LightLayout {
 
 // The first MAX_LIGHTS lights of the scene, as makeFrameData orders them.
 LightLayout lightLayoutOf(const Scene& scene);
+// The indices into scene.lights of FrameData::lights, in its order (point lights first).
+std::vector<uint32_t> gpuLightOrder(const Scene& scene);
 
 struct GpuScene {
   Buffer vertices;
@@ -49,6 +54,12 @@ struct GpuScene {
   LightLayout lights;
   bool anyTransparent = false;
   bool anyTextured = false;
+  Bounds bounds;  // every object's box: what the shadow maps must cover
+  // Shadow-map layers by light, in FrameData::lights' order (point lights
+  // first): the first of its layers (six for a point light, one for a
+  // directional one), or -1 for a light without shadows.
+  std::array<int32_t, MAX_LIGHTS> shadowFirstLayer{};
+  uint32_t shadowLayers = 0;
 };
 
 // Objects whose material asks for a UV projection draw a copy of their mesh
@@ -67,6 +78,18 @@ std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.
 gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
                              const glm::mat4& projection);
+// The shadow maps of one frame: what the forward pass reads (ShadowData:
+// per light its first layer and texel size, the bias, eye space to each
+// layer's clip space) and what the shadow pass draws with (world space to
+// each layer's clip space). A directional light's map is fitted to
+// `cameraViewProjection`'s frustum within the scene's bounds.
+struct ShadowFrame {
+  gpu::ShadowData data{};
+  std::vector<glm::mat4> worldToLightClip;  // one per layer
+};
+ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const glm::mat4& view,
+                            const glm::mat4& projection, const ShadowBias& bias, uint32_t mapSize);
+
 // Model-view and its normal matrix (inverse transpose) per object.
 // Materials travel with the draws (DrawItem::constants).
 std::vector<gpu::ObjectData> makeObjectData(

@@ -75,7 +75,8 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
 Image::Image(const Context& context, const ImageDesc& desc) : desc_(desc) {
   VkDevice device = context.device();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  info.flags = desc.layers == 6 ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+  bool cube = desc.layers == 6 && !desc.arrayView;
+  info.flags = cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = desc.format;
   info.extent = {desc.width, desc.height, 1};
@@ -103,7 +104,9 @@ Image::Image(const Context& context, const ImageDesc& desc) : desc_(desc) {
 
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   viewInfo.image = image;
-  viewInfo.viewType = desc.layers == 6 ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
+  viewInfo.viewType = cube             ? VK_IMAGE_VIEW_TYPE_CUBE
+                      : desc.arrayView ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
+                                       : VK_IMAGE_VIEW_TYPE_2D;
   viewInfo.format = desc.format;
   viewInfo.subresourceRange = {desc.aspect, 0, desc.mipLevels, 0, desc.layers};
   VkImageView view = VK_NULL_HANDLE;

@@ -111,6 +111,7 @@ struct ImageDesc {
   VkImageUsageFlags usage = 0;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  bool arrayView = false;  // view as a 2D array (else 6 layers make a cube, 1 a 2D image)
 };
 
 class Image {

@@ -1,0 +1,50 @@
+#pragma once
+// Shadow pass: the depth of the shadow casters as each light sees them, one
+// layer of a depth array per light view (a directional light's one, a point
+// light's six cube faces: six passes, one per face).
+// Reads: the scene's vertex and index buffers (positions only); the draws
+// whose object casts shadows, culled against each view's frustum.
+// Writes: its depth array, left in ShaderRead use for the forward pass
+// (BINDING_SHADOW_MAP, a compare sampler).
+#include <glm/glm.hpp>
+#include <span>
+
+#include "core/vulkan/context.h"
+#include "core/vulkan/gpu_scene.h"
+#include "core/vulkan/resources.h"
+
+namespace shadelab {
+
+class ShadowPass {
+ public:
+  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+  explicit ShadowPass(const Context& context);
+  // A depth array of `layers` layers of size x size texels, kept while both
+  // stay the same; returns true when the image changed (re-point the
+  // descriptors that read it). Waits for the device before replacing it.
+  bool prepare(uint32_t layers, uint32_t size);
+  // Depth of every caster of `scene` into each layer, seen through
+  // `worldToLightClip[layer]`; `objectTransforms` are the scene objects'
+  // model matrices. Returns the caster draws recorded (after culling).
+  uint32_t record(VkCommandBuffer cmd, const GpuScene& scene,
+                  std::span<const glm::mat4> objectTransforms,
+                  std::span<const glm::mat4> worldToLightClip);
+
+  // The array (or a 1x1 placeholder before prepare) and its compare sampler.
+  VkImageView view() const { return map_ ? map_.view() : placeholder_.view(); }
+  VkSampler sampler() const { return sampler_.get(); }
+  uint32_t size() const { return map_ ? map_.desc().width : 1; }
+
+ private:
+  const Context& context_;
+  PipelineLayout layout_;
+  ShaderModule vertex_;
+  Pipeline pipeline_;
+  Sampler sampler_;
+  Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
+  Image map_;
+  std::vector<ImageView> layerViews_;  // one per layer: the attachment of its pass
+};
+
+}  // namespace shadelab

@@ -1,0 +1,159 @@
+// Shadow maps on the device: goldens of each filter on the `shadows` scene
+// (contact shadows of a box and a sphere, a post's long shadow under a low
+// sun, a point light's cube map), each with must-fail twins; the GPU's
+// shadow term against the C++ twin of the equation with the tracer's exact
+// shadow rays; acne and peter-panning of the default bias measured.
+#include <cmath>
+
+#include "core/scene/lighting.h"
+#include "core/scene/transform.h"
+#include "core/trace/raytracer.h"
+#include "gpu_test_support.h"
+#include "measure/shadow_study.h"
+
+namespace shadelab::test {
+namespace {
+
+constexpr uint32_t kWidth = 320;
+constexpr uint32_t kHeight = 180;
+
+RenderSettings shadowed(ShadowMethod method, ShadingModel model = ShadingModel::Phong) {
+  RenderSettings settings{kWidth, kHeight, model};
+  settings.shadows = method;
+  return settings;
+}
+
+struct ShadowGoldenCase {
+  ShadowMethod method;
+  ShadingModel model;
+  std::string name() const {
+    return "shadows-" + std::string(nameOf(kShadowMethodNames, method)) + "-" +
+           std::string(shadingModelName(model));
+  }
+};
+
+class ShadowGolden : public GpuTest, public ::testing::WithParamInterface<ShadowGoldenCase> {};
+
+TEST_P(ShadowGolden, MatchesGolden) {
+  const ShadowGoldenCase& c = GetParam();
+  EXPECT_TRUE(
+      matchesGolden(c.name(), render(builtinScene("shadows"), shadowed(c.method, c.model))));
+}
+
+// Must-fail twins: the same frame without shadows, and with the sun turned
+// by two degrees (every shadow moves, the lit shading barely), must be rejected.
+TEST_P(ShadowGolden, ComparisonRejectsNoShadowsAndAMovedSun) {
+  const ShadowGoldenCase& c = GetParam();
+  ImageU8 golden = loadGolden(c.name());
+  Scene scene = builtinScene("shadows");
+  EXPECT_FALSE(matchesImage(golden, render(scene, shadowed(ShadowMethod::Off, c.model))));
+  glm::vec4 turned = rotationY(glm::radians(2.0f)) * glm::vec4(scene.lights[0].direction, 0.0f);
+  scene.lights[0].direction = glm::vec3(turned);
+  EXPECT_FALSE(matchesImage(golden, render(scene, shadowed(c.method, c.model))));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Methods, ShadowGolden,
+    ::testing::Values(ShadowGoldenCase{ShadowMethod::Hard, ShadingModel::Phong},
+                      ShadowGoldenCase{ShadowMethod::Pcf3, ShadingModel::Phong},
+                      ShadowGoldenCase{ShadowMethod::Pcf5, ShadingModel::Phong},
+                      ShadowGoldenCase{ShadowMethod::Pcf3, ShadingModel::Flat},
+                      ShadowGoldenCase{ShadowMethod::Pcf3, ShadingModel::Gouraud}),
+    [](const auto& info) {
+      std::string name = info.param.name();
+      std::erase(name, '-');
+      return name;
+    });
+
+using ShadowImages = GpuTest;
+
+// Floor pixels (the plane is exact in both renderers) sampled on a grid:
+// the GPU's Phong colour against illuminate() with k_shadow = 1 where the
+// tracer's shadow ray reaches the light and 0 where it does not.
+struct TwinAgreement {
+  int samples = 0, agreeing = 0, shadowedSamples = 0;
+};
+
+TwinAgreement compareWithTwin(Renderer& renderer, const Scene& scene, bool useShadowTerm) {
+  ImageRgba gpu = renderer.renderToImage(scene, shadowed(ShadowMethod::Pcf3)).image;
+  std::vector<ShadowTruth> truths;
+  for (uint32_t light = 0; light < scene.lights.size(); ++light)
+    truths.push_back(traceShadowTruth(scene, light, kWidth, kHeight));
+  RayTracer tracer(scene);
+  CameraRays camera(scene.camera, kWidth, kHeight);
+  glm::mat4 view = scene.camera.viewMatrix();
+  std::vector<Light> lights;
+  for (const Light& light : scene.lights) lights.push_back(lightInView(light, view));
+  TwinAgreement result;
+  for (uint32_t y = 2; y < kHeight; y += 4)
+    for (uint32_t x = 2; x < kWidth; x += 4) {
+      size_t p = size_t(y) * kWidth + x;
+      std::optional<SurfaceHit> hit =
+          tracer.intersect(camera.through(float(x) + 0.5f, float(y) + 0.5f), 0.0f, 1.0f);
+      if (!hit || hit->object != 0) continue;  // the floor only
+      std::vector<float> k;
+      bool known = true;
+      for (const ShadowTruth& truth : truths) {
+        ShadowTruth::Pixel pixel = truth.pixels[p];
+        known &= pixel != ShadowTruth::Pixel::Ignored;
+        k.push_back(pixel == ShadowTruth::Pixel::Lit ? 1.0f : 0.0f);
+      }
+      if (!known) continue;
+      glm::vec3 position(view * glm::vec4(hit->position, 1.0f));
+      glm::vec3 normal = glm::mat3(view) * hit->geometricNormal;
+      glm::vec3 expected =
+          illuminate(scene.ambient, lights, position, normal, scene.objects[0].material, false,
+                     useShadowTerm ? std::span<const float>(k) : std::span<const float>());
+      glm::vec3 actual(gpu.pixels[p * 4], gpu.pixels[p * 4 + 1], gpu.pixels[p * 4 + 2]);
+      ++result.samples;
+      result.shadowedSamples += std::count(k.begin(), k.end(), 0.0f) > 0 ? 1 : 0;
+      // Half-float target: a few thousandths of slack.
+      result.agreeing += glm::all(glm::lessThan(glm::abs(actual - expected), glm::vec3(0.01f)));
+    }
+  return result;
+}
+
+TEST_F(ShadowImages, GpuShadowTermAgreesWithTheCppTwin) {
+  TwinAgreement agreement = compareWithTwin(renderer(), builtinScene("shadows"), true);
+  ASSERT_GT(agreement.samples, 500);
+  ASSERT_GT(agreement.shadowedSamples, 50);  // the floor holds shadows of both lights
+  EXPECT_GE(agreement.agreeing, agreement.samples * 99 / 100)
+      << agreement.agreeing << " of " << agreement.samples;
+}
+
+// Must-fail twin: the twin without its shadow term disagrees on the shadows.
+TEST_F(ShadowImages, TwinWithoutShadowTermDisagrees) {
+  TwinAgreement agreement = compareWithTwin(renderer(), builtinScene("shadows"), false);
+  EXPECT_LT(agreement.agreeing, agreement.samples - agreement.shadowedSamples * 9 / 10);
+}
+
+// The default bias: acne under 0.1% of truly lit pixels and peter-panning
+// under 1% of truly shadowed ones near contact, for each light kind.
+TEST_F(ShadowImages, DefaultBiasKeepsAcneAndPeterPanningSmall) {
+  Scene scene = builtinScene("shadows");
+  for (uint32_t light = 0; light < scene.lights.size(); ++light) {
+    SCOPED_TRACE(light);
+    ShadowTruth truth = traceShadowTruth(scene, light, kWidth, kHeight);
+    ShadowErrors errors = measureShadowErrors(renderer(), scene, light, truth, kDefaultShadowMethod,
+                                              ShadowBias{}, kDefaultShadowMapSize);
+    ASSERT_GT(errors.lit, 5000u);
+    ASSERT_GT(errors.contact, 100u);
+    EXPECT_LT(errors.acneFraction(), 0.001);
+    EXPECT_LT(errors.peterPanningFraction(), 0.01);
+  }
+}
+
+// Must-fail twins of the measure: no bias shows acne, a large one peter-panning.
+TEST_F(ShadowImages, ZeroBiasShowsAcneAndLargeBiasPeterPanning) {
+  Scene scene = builtinScene("shadows");
+  ShadowTruth truth = traceShadowTruth(scene, 0, kWidth, kHeight);
+  ShadowErrors none = measureShadowErrors(renderer(), scene, 0, truth, ShadowMethod::Hard,
+                                          {0.0f, 0.0f, 0.0f}, kDefaultShadowMapSize);
+  EXPECT_GT(none.acneFraction(), 0.01);
+  ShadowErrors large = measureShadowErrors(renderer(), scene, 0, truth, ShadowMethod::Hard,
+                                           {64.0f, 0.0f, 64.0f}, kDefaultShadowMapSize);
+  EXPECT_GT(large.peterPanningFraction(), 0.02) << large.peterPanning << " of " << large.contact;
+}
+
+}  // namespace
+}  // namespace shadelab::test
