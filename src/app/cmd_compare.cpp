@@ -102,9 +102,9 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
-  printSceneWarnings(scene, true);
   checkTriangleBudget(scene, 4.0f, global.maxTriangles, "compare (its raster reference is 4x)",
                       "--max-triangles");
+  printSceneWarnings(scene, true);
 
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;

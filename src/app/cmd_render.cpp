@@ -133,7 +133,6 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
-  printSceneWarnings(scene, true);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
   // Before building: --quality may sweep up to 4x (quality.cpp), the raster reference is 4x.
@@ -141,6 +140,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   checkTriangleBudget(scene, largest, global.maxTriangles,
                       options.quality ? "--quality" : "--tess " + options.tessellation,
                       "--max-triangles");
+  printSceneWarnings(scene, true);
   if (options.simplify > 0.0f) {
     SimplifyStats simplified = simplifyForView(scene, view, options.simplify);
     std::printf("simplified loaded meshes to %g px: %llu -> %llu triangles\n", options.simplify,

@@ -55,8 +55,8 @@ int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
-  printSceneWarnings(scene, false);
   checkTriangleBudget(scene, 1.0f, global.maxTriangles, "trace", "--max-triangles");
+  printSceneWarnings(scene, false);
   TraceSettings settings;
   settings.width = size.width;
   settings.height = size.height;

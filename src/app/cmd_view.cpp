@@ -48,9 +48,9 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene);
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
-  printSceneWarnings(scene, true);
   checkTriangleBudget(scene, viewer.tessellation, global.maxTriangles,
                       "--tess " + options.tessellation, "--max-triangles");
+  printSceneWarnings(scene, true);
 
   std::unique_ptr<Window> window;
   try {
