@@ -109,29 +109,26 @@ void Renderer::createFrame(Frame& frame) {
   vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 }
 
-void Renderer::writeShadowMapDescriptor(const Frame& frame) const {
-  VkDescriptorImageInfo image{shadow_.sampler(), shadow_.view(),
-                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+// One combined image sampler of a frame's set (the shadow map, the environment cube).
+void Renderer::writeSampledImage(const Frame& frame, uint32_t binding, VkSampler sampler,
+                                 VkImageView view) const {
+  VkDescriptorImageInfo image{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = frame.set;
-  write.dstBinding = BINDING_SHADOW_MAP;
+  write.dstBinding = binding;
   write.descriptorCount = 1;
   write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   write.pImageInfo = &image;
   vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
 }
 
+void Renderer::writeShadowMapDescriptor(const Frame& frame) const {
+  writeSampledImage(frame, BINDING_SHADOW_MAP, shadow_.sampler(), shadow_.view());
+}
+
 void Renderer::writeEnvironmentDescriptor(const Frame& frame) const {
   const EnvironmentCube& cube = sceneEnvironment_ ? sceneEnvironment_ : placeholderEnvironment_;
-  VkDescriptorImageInfo image{cube.sampler.get(), cube.image.view(),
-                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = frame.set;
-  write.dstBinding = BINDING_ENVIRONMENT;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  write.pImageInfo = &image;
-  vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+  writeSampledImage(frame, BINDING_ENVIRONMENT, cube.sampler.get(), cube.image.view());
 }
 
 void Renderer::bindEnvironment(const Scene& scene, bool enabled) {

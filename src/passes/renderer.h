@@ -191,6 +191,8 @@ class Renderer {
   // same) or picks the placeholder, and points every frame's descriptor at
   // it; call with no frame in flight.
   void bindEnvironment(const Scene& scene, bool enabled);
+  void writeSampledImage(const Frame& frame, uint32_t binding, VkSampler sampler,
+                         VkImageView view) const;
   void writeEnvironmentDescriptor(const Frame& frame) const;
   void writeShadowMapDescriptor(const Frame& frame) const;
   // The shadow pass of a frame (with shadows on and some light casting).
