@@ -60,9 +60,6 @@ using mat4 = glm::mat4;
 #define SHADOW_PCF3 2
 #define SHADOW_PCF5 3
 
-// Shadow-map layers: one per directional light, six (cube faces) per point light.
-#define MAX_SHADOW_VIEWS (6 * MAX_LIGHTS)
-
 // A light in eye space.
 struct GpuLight {
   vec4 position;     // point: eye-space position, w = 1; directional: unit eye-space direction
@@ -82,14 +79,21 @@ struct FrameData {
 };
 
 // The shadow maps as the forward pass reads them (BINDING_SHADOW_MAP's layers).
+// Everything is indexed by the light's slot, which is a constant once the
+// shader's light loops are unrolled: lavapipe loads such values once per
+// draw, where a per-fragment index (e.g. a cube face) costs a gather per lane.
 struct ShadowData {
   // Per light, in FrameData::lights' order: x = its first layer (-1: no
   // map), y = the world size of a texel (directional) or of a texel per unit
   // of distance (point), z = 1 / map size.
   vec4 lights[MAX_LIGHTS];
+  // Point lights: the cube faces' projection as numbers. For a direction v
+  // from the light with major axis m = |v_major| (the face), depth =
+  // x - y / m and the face's xy = z * (right, up) / m (shadows.glsl).
+  vec4 cube[MAX_LIGHTS];
   vec4 bias;  // ShadowBias in texels: x = constant, y = slope, z = normal offset
-  // Per layer: eye space to the layer's clip space (xy -1..1, depth 0..1).
-  mat4 eyeToLight[MAX_SHADOW_VIEWS];
+  // Directional lights: eye space to the map's clip space (xy -1..1, depth 0..1).
+  mat4 eyeToLight[MAX_LIGHTS];
 };
 
 // Per object and per frame: its matrices (read by the vertex stage only).

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -496,7 +497,10 @@ TEST_F(Cli, BenchWritesOneCsvRowPerSetting) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::string csv = readText(out("bench/results.csv"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;
-  EXPECT_EQ(csv.rfind("scene,width,height,mode,tessellation,msaa,filter,triangles,frames,", 0), 0u)
+  EXPECT_EQ(csv.rfind("scene,width,height,mode,tessellation,msaa,filter,shadows,shadow_size,"
+                      "triangles,frames,",
+                      0),
+            0u)
       << csv;
   // 2 rounds x (4 frames - 1 warm-up) steady frames per setting.
   EXPECT_NE(csv.find("spheres,64,36,phong,0.5,1,material,"), std::string::npos) << csv;
@@ -731,11 +735,44 @@ TEST_F(Cli, StudyBumpSilhouetteWritesCsvChartAndImages) {
   EXPECT_EQ(pngSize(out("bs/displaced_1024.png")), std::make_pair(64u, 48u));
 }
 
+// Shadow-map studies against the tracer's exact shadows: the numbers must
+// move the way the failure modes say, not only be written.
+TEST_F(Cli, StudyShadowBiasMeasuresAcneFallingWithBias) {
+  CommandResult r = run("study shadow-bias -o " + out("sb") + " --size 160x90");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("sb/shadow_bias.csv")));
+  ASSERT_EQ(rows.size(), 1u + 2 * 4 * 8) << "header + 2 lights x 4 bias kinds x 8 values";
+  EXPECT_EQ(rows[0][5], "acne_percent");
+  std::map<std::string, double> acne;  // "light kind value" -> acne percent
+  for (size_t i = 1; i < rows.size(); ++i)
+    acne[rows[i][0] + " " + rows[i][1] + " " + rows[i][2]] = std::stod(rows[i][5]);
+  for (const char* light : {"directional", "point"}) {
+    std::string prefix = std::string(light) + " default-scaled ";
+    EXPECT_GT(acne.at(prefix + "0"), 1.0) << light << ": no bias shows acne";
+    EXPECT_LT(acne.at(prefix + "1"), 0.1) << light << ": the default bias keeps it under 0.1%";
+  }
+  expectDrawnChart(out("sb/shadow_bias.png"));
+}
+
+TEST_F(Cli, StudyShadowEdgesMeasuresErrorAgainstMapSize) {
+  CommandResult r = run("study shadow-edges -o " + out("se") + " --size 160x90");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("se/shadow_edges.csv")));
+  ASSERT_EQ(rows.size(), 1u + 1 + 3 * 5) << "header + off + 3 methods x 5 sizes";
+  EXPECT_EQ(rows[1][0], "off");
+  double off = std::stod(rows[1][4]);
+  double hard128 = std::stod(rows[2][4]), hard2048 = std::stod(rows[6][4]);
+  EXPECT_EQ(rows[6][1], "2048");
+  EXPECT_LT(hard2048, 0.5 * off) << "shadow maps remove most of the shadows' error";
+  EXPECT_LT(hard2048, hard128) << "a finer map follows the traced edges better";
+  expectDrawnChart(out("se/shadow_edges.png"));
+}
+
 TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* name :
-       {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace", "bump-silhouette"})
+  for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace",
+                           "bump-silhouette", "shadow-bias", "shadow-edges"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 
@@ -753,7 +790,8 @@ TEST_F(Cli, StudyRefusesAnUnknownNameAndWritesNothing) {
 const std::vector<std::string> kBenchColumns = {"scene",         "width",
                                                 "height",        "mode",
                                                 "tessellation",  "msaa",
-                                                "filter",        "triangles",
+                                                "filter",        "shadows",
+                                                "shadow_size",   "triangles",
                                                 "frames",        "device_median_ms",
                                                 "device_p95_ms", "wall_median_ms",
                                                 "wall_p95_ms",   "device_memory_mb",
@@ -772,15 +810,17 @@ TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   for (size_t i = 1; i < rows.size(); ++i) {
     ASSERT_EQ(rows[i].size(), kBenchColumns.size());
     EXPECT_EQ(rows[i][6], "material");
-    EXPECT_GT(std::stod(rows[i][13]), 0.0) << "device memory";
-    EXPECT_GE(std::stod(rows[i][16]), 0.0) << "rmse";
-    EXPECT_GT(std::stod(rows[i][17]), 10.0) << "psnr";
+    EXPECT_EQ(rows[i][7], "off");
+    EXPECT_EQ(rows[i][8], "0");
+    EXPECT_GT(std::stod(rows[i][15]), 0.0) << "device memory";
+    EXPECT_GE(std::stod(rows[i][18]), 0.0) << "rmse";
+    EXPECT_GT(std::stod(rows[i][19]), 10.0) << "psnr";
   }
   // The reference is Phong at 4x tessellation and 4x MSAA, so finer and
   // multisampled Phong errs less than coarse flat.
   EXPECT_EQ(rows[1][3], "flat");
   EXPECT_EQ(rows[8][3], "phong");
-  EXPECT_LT(std::stod(rows[8][16]), std::stod(rows[1][16]));
+  EXPECT_LT(std::stod(rows[8][18]), std::stod(rows[1][18]));
   for (const char* chart : {"b/error_vs_time.png", "b/error_vs_triangles.png"}) {
     EXPECT_EQ(pngSize(out(chart)), std::make_pair(1100u, 640u)) << chart;
     expectDrawnChart(out(chart));
@@ -799,10 +839,37 @@ TEST_F(Cli, BenchSweepsTextureFilters) {
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[1][6], "nearest");
   EXPECT_EQ(rows[2][6], "trilinear");
-  EXPECT_GT(std::stod(rows[1][16]), std::stod(rows[2][16])) << "rmse, nearest against trilinear";
+  EXPECT_GT(std::stod(rows[1][18]), std::stod(rows[2][18])) << "rmse, nearest against trilinear";
   CommandResult bad = run("bench -o " + out("g") + " --filters blurry");
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("--filters 'blurry'"), std::string::npos) << bad.output;
+}
+
+// Shadow method and map size are axes: off is one point, each method one
+// per size; against the traced reference (shadow rays) shadows err less.
+TEST_F(Cli, BenchSweepsShadowMethodsAndMapSizes) {
+  CommandResult r = run("bench default -o " + out("s") +
+                        " --size 96x54 --frames 3 --rounds 1 --modes phong --tess 1 --msaa 1 "
+                        "--shadows off,hard,pcf3 --shadow-sizes 256,1024");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("s/results.csv")));
+  ASSERT_EQ(rows.size(), 1u + 1 + 2 * 2) << "header + off + 2 methods x 2 sizes";
+  EXPECT_EQ(rows[1][7], "off");
+  EXPECT_EQ(rows[2][7], "hard");
+  EXPECT_EQ(rows[2][8], "256");
+  EXPECT_EQ(rows[5][7], "pcf3");
+  EXPECT_EQ(rows[5][8], "1024");
+  size_t flip = rows[0].size() - 1;
+  ASSERT_EQ(rows[0][flip], "flip");
+  for (size_t i = 2; i < rows.size(); ++i)
+    EXPECT_LT(std::stod(rows[i][flip]), std::stod(rows[1][flip])) << rows[i][7] << rows[i][8];
+  CommandResult bad = run("bench -o " + out("t") + " --shadows soft");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--shadows 'soft'"), std::string::npos) << bad.output;
+  bad = run("bench -o " + out("t") + " --shadows hard --shadow-sizes 0");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--shadow-sizes 0"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(out("t")));
 }
 
 // With bench results given, the loosest bound picks the row the CSV says is cheapest.
@@ -816,7 +883,7 @@ TEST_F(Cli, QualityWithLooseBoundPicksTheCheapestBenchedSetting) {
   ASSERT_EQ(rows.size(), 7u);
   size_t cheapest = 1;
   for (size_t i = 2; i < rows.size(); ++i)
-    if (std::stod(rows[i][9]) < std::stod(rows[cheapest][9])) cheapest = i;
+    if (std::stod(rows[i][11]) < std::stod(rows[cheapest][11])) cheapest = i;
   std::string expected = "chose " + rows[cheapest][3] + " t" + rows[cheapest][4] + " 1x";
   CommandResult r =
       run("render default -o " + out("q.png") + " --size 64x36 --quality 1000 --bench " + out("b"));
@@ -844,8 +911,8 @@ TEST_F(Cli, BenchAndQualityDefaultToTheTracedReferenceAndFlip) {
             0);
   auto rows = csvRows(readText(out("b/results.csv")));
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[1][15], "trace");
-  const double flip = std::stod(rows[1][19]);
+  EXPECT_EQ(rows[1][17], "trace");
+  const double flip = std::stod(rows[1][21]);
   EXPECT_GT(flip, 0.0);
   EXPECT_LT(flip, 1.0);
   CommandResult r = run("render spheres -o " + out("q.png") + " --size 64x36 --quality 0.2");

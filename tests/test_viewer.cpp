@@ -41,7 +41,7 @@ class Viewer : public GpuTest {
                      const std::string& environment = "", const std::string& size = "320x180") {
     std::ofstream(path("script.txt")) << script;
     // The headless renders compared against use FrameSettings' default,
-    // shadows off; the CLI's default is pcf3, so pin it unless a test sets it.
+    // shadows off; the CLI's default is hard, so pin it unless a test sets it.
     std::string shadows = options.find("--shadows") == std::string::npos ? " --shadows off" : "";
     return run("view " + options + shadows + " --size " + size + " --present immediate --script " +
                    path("script.txt"),

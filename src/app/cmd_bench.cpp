@@ -34,6 +34,8 @@ struct BenchCommandOptions {
   std::string reference = "trace";
   std::string metric = "flip";
   std::string filters = "material";
+  std::string shadows = "off";
+  std::vector<int64_t> shadowSizes{kDefaultShadowMapSize};
   uint32_t frames = 60;
   uint32_t rounds = 2;
 };
@@ -57,30 +59,53 @@ std::vector<std::optional<TextureFilter>> parseFilterList(const std::string& tex
   return filters;
 }
 
+// "off,hard" -> {Off, Hard}; throws InputError naming a bad entry.
+std::vector<ShadowMethod> parseShadowList(const std::string& text) {
+  std::vector<ShadowMethod> methods;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+    methods.push_back(parseNamed(kShadowMethodNames, item, "--shadows"));
+  if (methods.empty()) throw InputError("--shadows '" + text + "': expected at least one method");
+  return methods;
+}
+
+std::vector<uint32_t> checkShadowSizes(const std::vector<int64_t>& sizes) {
+  std::vector<uint32_t> checked;
+  for (int64_t size : sizes) {
+    if (size < 1 || size > 16384)
+      throw InputError("--shadow-sizes " + std::to_string(size) +
+                       ": expected map sizes from 1 to 16384 texels");
+    checked.push_back(uint32_t(size));
+  }
+  return checked;
+}
+
 // One line per setting: cost (with the multiple of the unlit floor), memory,
 // error; settings on the Pareto front are starred.
 void printResults(const std::vector<BenchResult>& results, const ErrorMetric& metric,
                   size_t metricIndex) {
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, metricIndex), metricIndex, metric);
-  std::printf("%-12s %5s %5s %-9s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess", "msaa",
-              "filter", "triangles", "median ms", "p95 ms", "x floor", "dev MB", "rss MB",
-              metric.name.c_str());
+  std::printf("%-12s %5s %5s %-9s %-10s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess", "msaa",
+              "filter", "shadows", "triangles", "median ms", "p95 ms", "x floor", "dev MB",
+              "rss MB", metric.name.c_str());
   for (size_t i = 0; i < results.size(); ++i) {
     const BenchResult& r = results[i];
     const BenchResult* floor = nullptr;
     for (const BenchResult& f : results)
       if (f.point.model == ShadingModel::Unlit && f.point.tessellation == r.point.tessellation &&
-          f.point.msaaSamples == r.point.msaaSamples && f.point.filter == r.point.filter)
+          f.point.msaaSamples == r.point.msaaSamples && f.point.filter == r.point.filter &&
+          f.point.shadows == r.point.shadows && f.point.shadowMapSize == r.point.shadowMapSize)
         floor = &f;
     char ratio[16] = "-";
     if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
     bool onFront = std::find(front.begin(), front.end(), i) != front.end();
-    std::printf("%-12s %5g %5u %-9s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
+    std::printf("%-12s %5g %5u %-9s %-10s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
                 std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
                 r.point.msaaSamples, benchFilterName(r.point.filter).c_str(),
-                static_cast<unsigned long long>(r.triangles), r.deviceMedianMs, r.deviceP95Ms,
-                ratio, double(r.deviceMemoryBytes) / (1 << 20),
+                benchShadowName(r.point).c_str(), static_cast<unsigned long long>(r.triangles),
+                r.deviceMedianMs, r.deviceP95Ms, ratio, double(r.deviceMemoryBytes) / (1 << 20),
                 double(r.peakResidentBytes) / (1 << 20),
                 metricIndex < r.errors.size() ? r.errors[metricIndex] : 0.0, onFront ? " *" : "");
   }
@@ -92,8 +117,12 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
 
 int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
-  BenchAxes axes{parseShadingModelList(options.modes, "--modes"), options.tessellations,
-                 options.msaa, parseFilterList(options.filters)};
+  BenchAxes axes{parseShadingModelList(options.modes, "--modes"),
+                 options.tessellations,
+                 options.msaa,
+                 parseFilterList(options.filters),
+                 parseShadowList(options.shadows),
+                 checkShadowSizes(options.shadowSizes)};
   BenchOptions bench{size.width,
                      size.height,
                      options.frames,
@@ -177,6 +206,15 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->add_option("--filters", options->filters,
                    "Texture filters, comma-separated: material (each material's own sampler), "
                    "nearest, bilinear, trilinear, aniso (slow on llvmpipe)")
+      ->capture_default_str();
+  command
+      ->add_option("--shadows", options->shadows,
+                   namedHelp("Shadow methods, comma-separated", kShadowMethodNames))
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-sizes", options->shadowSizes,
+                   "Shadow map sizes in texels, comma-separated (with shadows on)")
+      ->delimiter(',')
       ->capture_default_str();
   command
       ->add_option("--reference", options->reference,

@@ -62,10 +62,10 @@ BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const E
   std::optional<size_t> chosen = cheapestMeeting(candidates, metric, bound);
   const char* relation = metric.lowerIsBetter ? "<=" : ">=";
   std::printf("quality: %s %s %g, from %s\n", metric.name.c_str(), relation, bound, source.c_str());
-  std::printf("  %-22s %10s %10s %9s\n", "setting", "triangles", "device ms", metric.name.c_str());
+  std::printf("  %-30s %10s %10s %9s\n", "setting", "triangles", "device ms", metric.name.c_str());
   for (size_t i = 0; i < candidates.size(); ++i) {
     const QualityCandidate& c = candidates[i];
-    std::printf("  %-22s %10llu %10.3f %9.3f %s\n", benchPointName(c.point).c_str(),
+    std::printf("  %-30s %10llu %10.3f %9.3f %s\n", benchPointName(c.point).c_str(),
                 static_cast<unsigned long long>(c.triangles), c.costMs, c.error,
                 chosen == i                    ? "<- chosen"
                 : metric.meets(c.error, bound) ? "meets"
@@ -115,8 +115,11 @@ void printTimings(const RenderStats& stats) {
       percentile(wall, 95.0));
   std::vector<double> shadow(stats.shadowMs.begin() + long(warmup), stats.shadowMs.end());
   if (median(shadow) > 0.0)
-    std::printf("shadow maps: device median %.3f ms of the frame (%u caster draws)\n",
-                median(shadow), stats.shadowDraws);
+    std::printf(
+        "shadow maps: device median %.3f ms of the frame (%u caster draws in the last "
+        "frame%s)\n",
+        median(shadow), stats.shadowDraws,
+        stats.shadowDraws == 0 ? "; its maps were kept from an earlier frame" : "");
 }
 
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
@@ -158,7 +161,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     if (options.quality) {
       bool quick = options.benchFolder.empty();
       if (quick) {
-        std::fprintf(stderr, "quality: quick sweep of 16 settings against the %s reference\n",
+        std::fprintf(stderr, "quality: quick sweep of 48 settings against the %s reference\n",
                      reference.name.c_str());
         cached = quickQualitySweep(
             renderer, scene, reference, metric, size.width, size.height, options.msaa,
@@ -176,9 +179,11 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.depth = depth;
     settings.environment = look.environment;
     settings.textures = look.textures;
-    settings.shadows = look.shadows;
+    // --quality chooses the shadow method and map size with the model.
+    settings.shadows = options.quality ? point.shadows : look.shadows;
+    settings.shadowMapSize = options.quality ? point.shadowMapSize : look.shadowMapSize;
     settings.shadowBias = look.shadowBias;
-    settings.shadowMapSize = look.shadowMapSize;
+    settings.keepShadowMaps = look.keepShadowMaps;
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);

@@ -27,6 +27,12 @@ void ShadowOptions::add(CLI::App* command) {
       ->add_option("--shadow-normal-offset", normalOffset,
                    "Normal-offset shadow bias: texels along the normal times sin(angle) (0..64)")
       ->capture_default_str();
+  command
+      ->add_option("--shadow-cache", keep,
+                   namedHelp("Keep a shadow map while its light, its view and the casters are "
+                             "unchanged (off: redraw every map every frame, to time them)",
+                             kOnOffNames))
+      ->capture_default_str();
 }
 
 void ShadowOptions::apply(FrameSettings& settings) const {
@@ -45,6 +51,7 @@ void ShadowOptions::apply(FrameSettings& settings) const {
       throw InputError(text.str());
     }
   settings.shadowBias = {bias, slopeBias, normalOffset};
+  settings.keepShadowMaps = parseNamed(kOnOffNames, keep, "--shadow-cache");
 }
 
 void addLookOptions(CLI::App* command, LookOptions& options) {

@@ -20,6 +20,7 @@ struct ShadowOptions {
   float bias = ShadowBias{}.constant;
   float slopeBias = ShadowBias{}.slope;
   float normalOffset = ShadowBias{}.normalOffset;
+  std::string keep = "on";  // --shadow-cache
   void add(CLI::App* command);
   void apply(FrameSettings& settings) const;  // throws InputError naming the option
 };

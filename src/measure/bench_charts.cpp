@@ -83,11 +83,16 @@ ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metri
   chart.y = {metric.description, AxisScale::Linear};
   // One line per (model, samples, filter): the tessellation sweep runs along it.
   std::map<std::tuple<ShadingModel, uint32_t, std::string>, std::vector<size_t>> lines;
+  auto label = [](const BenchPoint& point) {
+    std::string text = point.filter ? benchFilterName(point.filter) : "";
+    if (point.shadows != ShadowMethod::Off)
+      text += (text.empty() ? "" : " ") + std::string("shadows ") + benchShadowName(point);
+    return text;
+  };
   double lowTriangles = 1e300, highTriangles = 0.0;
   for (size_t i : chartedResults(results, metricIndex)) {
     const BenchPoint& point = results[i].point;
-    lines[{point.model, point.msaaSamples, point.filter ? benchFilterName(point.filter) : ""}]
-        .push_back(i);
+    lines[{point.model, point.msaaSamples, label(point)}].push_back(i);
     lowTriangles = std::min(lowTriangles, double(results[i].triangles));
     highTriangles = std::max(highTriangles, double(results[i].triangles));
   }

@@ -14,11 +14,20 @@ namespace shadelab {
 
 std::vector<BenchPoint> benchPoints(const BenchAxes& axes) {
   std::vector<BenchPoint> points;
+  // Shadows off has no map size: one point, not one per size.
+  std::vector<std::pair<ShadowMethod, uint32_t>> shadows;
+  for (ShadowMethod method : axes.shadows) {
+    if (method == ShadowMethod::Off)
+      shadows.emplace_back(method, kDefaultShadowMapSize);
+    else
+      for (uint32_t size : axes.shadowMapSizes) shadows.emplace_back(method, size);
+  }
   for (float tessellation : axes.tessellations)
     for (uint32_t samples : axes.msaa)
       for (const std::optional<TextureFilter>& filter : axes.filters)
-        for (ShadingModel model : axes.models)
-          points.push_back({model, tessellation, samples, filter});
+        for (auto [method, size] : shadows)
+          for (ShadingModel model : axes.models)
+            points.push_back({model, tessellation, samples, filter, method, size});
   return points;
 }
 
@@ -26,12 +35,21 @@ std::string benchFilterName(const std::optional<TextureFilter>& filter) {
   return filter ? textureFilterName(*filter) : "material";
 }
 
+std::string benchShadowName(const BenchPoint& point) {
+  return point.shadows == ShadowMethod::Off
+             ? "off"
+             : std::string(nameOf(kShadowMethodNames, point.shadows)) + " " +
+                   std::to_string(point.shadowMapSize);
+}
+
 std::string benchPointName(const BenchPoint& point) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%s t%g %ux%s%s",
+  char text[96];
+  std::snprintf(text, sizeof text, "%s t%g %ux%s%s%s%s",
                 std::string(shadingModelName(point.model)).c_str(), point.tessellation,
                 point.msaaSamples, point.filter ? " " : "",
-                point.filter ? textureFilterName(*point.filter) : "");
+                point.filter ? textureFilterName(*point.filter) : "",
+                point.shadows != ShadowMethod::Off ? " " : "",
+                point.shadows != ShadowMethod::Off ? benchShadowName(point).c_str() : "");
   return text;
 }
 
@@ -64,6 +82,8 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       settings.frames = options.frames;
       settings.msaaSamples = point.msaaSamples;
       settings.textures.filterOverride = point.filter;
+      settings.shadows = point.shadows;
+      settings.shadowMapSize = point.shadowMapSize;
       resetPeakResident();
       RenderResult run = renderer.renderToImage(scenes.at(point.tessellation), settings);
       result.deviceMemoryBytes = std::max(result.deviceMemoryBytes, run.stats.deviceMemoryBytes);
@@ -86,12 +106,12 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
           errors += text;
         }
       }
-      char line[200];
-      std::snprintf(line, sizeof line, "round %u/%u  %-11s tess %-5g msaa %u  median %.3f ms%s",
-                    round + 1, options.rounds, std::string(shadingModelName(point.model)).c_str(),
-                    point.tessellation, point.msaaSamples,
-                    median({stats.deviceMs.begin() + long(warmup), stats.deviceMs.end()}),
-                    errors.c_str());
+      char line[240];
+      std::snprintf(
+          line, sizeof line, "round %u/%u  %-11s tess %-5g msaa %u shadows %-9s median %.3f ms%s",
+          round + 1, options.rounds, std::string(shadingModelName(point.model)).c_str(),
+          point.tessellation, point.msaaSamples, benchShadowName(point).c_str(),
+          median({stats.deviceMs.begin() + long(warmup), stats.deviceMs.end()}), errors.c_str());
       progress(line);
     }
   for (size_t i = 0; i < points.size(); ++i) {
@@ -107,7 +127,7 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
 std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions& options,
                      const std::string& sceneName) {
   std::ostringstream csv;
-  csv << "scene,width,height,mode,tessellation,msaa,filter,triangles,frames,"
+  csv << "scene,width,height,mode,tessellation,msaa,filter,shadows,shadow_size,triangles,frames,"
          "device_median_ms,device_p95_ms,wall_median_ms,wall_p95_ms,"
          "device_memory_mb,peak_rss_mb,reference";
   for (const ErrorMetric& metric : options.metrics) csv << ',' << metric.name;
@@ -115,7 +135,9 @@ std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions
   for (const BenchResult& r : results) {
     csv << sceneName << ',' << options.width << ',' << options.height << ','
         << shadingModelName(r.point.model) << ',' << r.point.tessellation << ','
-        << r.point.msaaSamples << ',' << benchFilterName(r.point.filter) << ',' << r.triangles
+        << r.point.msaaSamples << ',' << benchFilterName(r.point.filter) << ','
+        << nameOf(kShadowMethodNames, r.point.shadows) << ','
+        << (r.point.shadows == ShadowMethod::Off ? 0 : r.point.shadowMapSize) << ',' << r.triangles
         << ',' << r.frames << ',' << r.deviceMedianMs << ',' << r.deviceP95Ms << ','
         << r.wallMedianMs << ',' << r.wallP95Ms << ',' << double(r.deviceMemoryBytes) / (1 << 20)
         << ',' << double(r.peakResidentBytes) / (1 << 20) << ',' << options.reference.name;

@@ -25,6 +25,8 @@ struct BenchPoint {
   float tessellation = 1.0f;  // Scene::retessellate factor
   uint32_t msaaSamples = 1;
   std::optional<TextureFilter> filter;  // overrides every sampler; none: the materials' own
+  ShadowMethod shadows = ShadowMethod::Off;
+  uint32_t shadowMapSize = kDefaultShadowMapSize;  // meaningless with shadows off
 };
 
 // The sweep: every combination, models varying fastest.
@@ -33,9 +35,14 @@ struct BenchAxes {
   std::vector<float> tessellations{1.0f};
   std::vector<uint32_t> msaa{1};
   std::vector<std::optional<TextureFilter>> filters{std::nullopt};
+  std::vector<ShadowMethod> shadows{ShadowMethod::Off};
+  std::vector<uint32_t> shadowMapSizes{kDefaultShadowMapSize};  // only with shadows on
 };
 std::vector<BenchPoint> benchPoints(const BenchAxes& axes);
-std::string benchPointName(const BenchPoint& point);  // "phong t2 4x", "phong t2 4x nearest"
+// "phong t2 4x", "phong t2 4x nearest", "phong t1 1x hard 2048"
+std::string benchPointName(const BenchPoint& point);
+// "off", or the method and map size: "hard 2048".
+std::string benchShadowName(const BenchPoint& point);
 // "material" for no override, else the filter's name.
 std::string benchFilterName(const std::optional<TextureFilter>& filter);
 

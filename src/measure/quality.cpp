@@ -27,7 +27,10 @@ std::vector<QualityCandidate> quickQualitySweep(
   BenchAxes axes{
       {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong, ShadingModel::BlinnPhong},
       {0.5f, 1.0f, 2.0f, 4.0f},
-      {msaa}};
+      {msaa},
+      {std::nullopt},
+      {ShadowMethod::Off, ShadowMethod::Hard, ShadowMethod::Pcf3},
+      {kDefaultShadowMapSize}};
   // Few frames: enough to rank settings whose costs differ by more than the
   // noise; `bench` measures properly.
   BenchOptions options{width, height, /* frames= */ 8, /* rounds= */ 1, reference, {metric}};
@@ -55,14 +58,25 @@ std::vector<QualityCandidate> candidatesFromBench(const BenchTable& table,
     return filterColumn == table.columns.end() ||
            row[size_t(filterColumn - table.columns.begin())] == "material";
   };
+  // Tables from before shadow maps have no shadow columns: shadows off.
+  auto shadowsColumn = std::find(table.columns.begin(), table.columns.end(), "shadows");
+  auto sizeColumn = std::find(table.columns.begin(), table.columns.end(), "shadow_size");
+  auto shadowsOf = [&](const std::vector<std::string>& row) -> std::optional<ShadowMethod> {
+    if (shadowsColumn == table.columns.end()) return ShadowMethod::Off;
+    return valueOf(kShadowMethodNames, row[size_t(shadowsColumn - table.columns.begin())]);
+  };
   std::vector<QualityCandidate> candidates;
   try {
     for (const std::vector<std::string>& row : table.rows) {
       std::optional<ShadingModel> model = valueOf(kShadingModelNames, row[mode]);
-      if (row[scene] != sceneName || !model || *model == ShadingModel::Unlit ||
+      std::optional<ShadowMethod> shadows = shadowsOf(row);
+      if (row[scene] != sceneName || !model || *model == ShadingModel::Unlit || !shadows ||
           std::stoul(row[samples]) != msaa || row[error].empty() || !ownFilter(row))
         continue;
-      candidates.push_back({{*model, std::stof(row[tess]), msaa},
+      uint32_t mapSize = kDefaultShadowMapSize;
+      if (*shadows != ShadowMethod::Off && sizeColumn != table.columns.end())
+        mapSize = uint32_t(std::stoul(row[size_t(sizeColumn - table.columns.begin())]));
+      candidates.push_back({{*model, std::stof(row[tess]), msaa, std::nullopt, *shadows, mapSize},
                             std::stoull(row[triangles]),
                             std::stod(row[cost]),
                             std::stod(row[error])});

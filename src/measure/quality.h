@@ -1,5 +1,6 @@
 #pragma once
-// `render --quality X`: the cheapest shading model and tessellation whose
+// `render --quality X`: the cheapest shading model, tessellation and shadow
+// method whose
 // error against the reference meets X, from a quick sweep or from the
 // results a `bench` run wrote. X is a bound in the chosen metric's units: a
 // ceiling for RMSE, a floor for PSNR (FLIP, a ceiling, once it lands).
@@ -26,7 +27,8 @@ struct QualityCandidate {
 std::optional<size_t> cheapestMeeting(const std::vector<QualityCandidate>& candidates,
                                       const ErrorMetric& metric, double bound);
 
-// Every lit model x tessellation 0.5, 1, 2, 4 at `msaa`, a few frames each.
+// Every lit model x tessellation 0.5, 1, 2, 4 x shadows off, hard, pcf3
+// (default map size) at `msaa`, a few frames each.
 std::vector<QualityCandidate> quickQualitySweep(
     Renderer& renderer, const Scene& scene, const Reference& reference, const ErrorMetric& metric,
     uint32_t width, uint32_t height, uint32_t msaa,

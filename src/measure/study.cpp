@@ -11,6 +11,8 @@ StudyResult runTirStudy(const StudyOptions& options, const StudyServices& servic
 StudyResult runGouraudHighlightStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runEnvVsTraceStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runBumpSilhouetteStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runShadowBiasStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runShadowEdgesStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -37,6 +39,13 @@ const std::vector<Study>& studies() {
        "environment mapping against the traced reflection on env, FLIP split by where the traced "
        "path goes (hits an object or escapes), per shading model",
        480, 270, runEnvVsTraceStudy},
+      {"shadow-bias",
+       "shadow-map bias (constant, slope, normal offset, the default scaled) against acne and "
+       "peter-panning, measured with the tracer's exact shadow rays",
+       320, 180, runShadowBiasStudy},
+      {"shadow-edges",
+       "shadow-map size and filter against the traced shadow edges: mean FLIP and frame time", 480,
+       270, runShadowEdgesStudy},
   };
   return table;
 }

@@ -404,7 +404,8 @@ void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& 
   std::vector<glm::mat4> transforms;
   transforms.reserve(source.objects.size());
   for (const Object& object : source.objects) transforms.push_back(object.transform);
-  stats.shadowDraws = shadow_.record(cmd, scene, transforms, shadows.worldToLightClip);
+  stats.shadowDraws = shadow_.record(cmd, scene, uploadCount_, transforms, shadows.worldToLightClip,
+                                     settings_.keepShadowMaps);
 }
 
 void Renderer::recordReadback(const Buffer& readback) {

@@ -60,6 +60,10 @@ struct FrameSettings {
   ShadowMethod shadows = ShadowMethod::Off;
   ShadowBias shadowBias;
   uint32_t shadowMapSize = kDefaultShadowMapSize;
+  // Keep a map layer whose light view and casters have not changed since
+  // it was drawn (ShadowPass says how); off redraws every layer every frame,
+  // to time the maps themselves. Images are the same either way.
+  bool keepShadowMaps = true;
 };
 
 // renderToImage: one scene, uploaded once, drawn `frames` times.

@@ -1,5 +1,7 @@
 #include "passes/shadow_pass.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "core/scene/frustum.h"
 #include "core/vulkan/barriers.h"
 #include "core/vulkan/shader.h"
@@ -91,6 +93,7 @@ bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
   if (map_ && map_.desc().layers == layers && map_.desc().width == size) return false;
   if (map_) context_.waitIdle();  // frames in flight read the old map
   layerViews_.clear();
+  drawnFrom_.assign(layers, {});
   map_ = Image{};
   ImageDesc desc{kDepthFormat, size, size};
   desc.layers = layers;
@@ -116,15 +119,41 @@ bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
   return true;
 }
 
-uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
+uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
                             std::span<const glm::mat4> objectTransforms,
-                            std::span<const glm::mat4> worldToLightClip) {
+                            std::span<const glm::mat4> worldToLightClip, bool keep) {
   assert(map_ && worldToLightClip.size() <= layerViews_.size());
+  if (sceneUpload != drawnUpload_) {
+    drawnFrom_.assign(drawnFrom_.size(), {});
+    drawnUpload_ = sceneUpload;
+  }
+  // Each layer's casters (culled against its frustum; the near plane stays:
+  // depth clamp keeps what lies before it) and what the layer is drawn from.
+  std::vector<std::vector<const DrawItem*>> casters(worldToLightClip.size());
+  std::vector<size_t> toDraw;
+  for (size_t layer = 0; layer < worldToLightClip.size(); ++layer) {
+    Frustum frustum = frustumFromMatrix(worldToLightClip[layer]);
+    std::vector<float> from(glm::value_ptr(worldToLightClip[layer]),
+                            glm::value_ptr(worldToLightClip[layer]) + 16);
+    for (const DrawItem& draw : scene.draws) {
+      if (!draw.castsShadows || !boxIntersectsFrustum(draw.worldBounds, frustum)) continue;
+      casters[layer].push_back(&draw);
+      const glm::mat4& model = objectTransforms[size_t(draw.constants.object.x)];
+      from.push_back(float(&draw - scene.draws.data()));
+      from.insert(from.end(), glm::value_ptr(model), glm::value_ptr(model) + 16);
+    }
+    if (keep && from == drawnFrom_[layer]) continue;
+    drawnFrom_[layer] = std::move(from);
+    toDraw.push_back(layer);
+  }
+  if (toDraw.empty()) return 0;
+
   uint32_t size = map_.desc().width;
+  // The layers not drawn keep their depth: ShaderRead, not Undefined, before.
   imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::ShaderRead,
                ImageUse::DepthAttachment);
   uint32_t drawn = 0;
-  for (size_t layer = 0; layer < worldToLightClip.size(); ++layer) {
+  for (size_t layer : toDraw) {
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};  // unused slot
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depth.imageView = layerViews_[layer];
@@ -148,16 +177,12 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
     VkBuffer vertexBuffer = scene.vertices.get();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
-    Frustum frustum = frustumFromMatrix(worldToLightClip[layer]);
-    for (const DrawItem& draw : scene.draws) {
-      // Casters culled against the light's frustum. Its near plane stays:
-      // depth clamp keeps what lies before it, and nothing there is seen.
-      if (!draw.castsShadows || !boxIntersectsFrustum(draw.worldBounds, frustum)) continue;
+    for (const DrawItem* draw : casters[layer]) {
       glm::mat4 objectToClip =
-          worldToLightClip[layer] * objectTransforms[size_t(draw.constants.object.x)];
+          worldToLightClip[layer] * objectTransforms[size_t(draw->constants.object.x)];
       vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(objectToClip),
                          &objectToClip);
-      vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+      vkCmdDrawIndexed(cmd, draw->indexCount, 1, draw->firstIndex, draw->vertexOffset, 0);
       ++drawn;
     }
     vkCmdEndRendering(cmd);

@@ -6,6 +6,12 @@
 // whose object casts shadows, culled against each view's frustum.
 // Writes: its depth array, left in ShaderRead use for the forward pass
 // (BINDING_SHADOW_MAP, a compare sampler).
+// Keeps: a layer whose view and casters (their transforms, after culling)
+// are exactly those it was last drawn with is not drawn again: a static
+// light over static casters costs its map once, however many frames follow
+// (a point light's cube does not depend on the camera; a directional map
+// is refitted, and redrawn, when the camera moves). The kept depth is the
+// same as a redraw would give, so images do not change.
 #include <glm/glm.hpp>
 #include <span>
 
@@ -26,10 +32,12 @@ class ShadowPass {
   bool prepare(uint32_t layers, uint32_t size);
   // Depth of every caster of `scene` into each layer, seen through
   // `worldToLightClip[layer]`; `objectTransforms` are the scene objects'
-  // model matrices. Returns the caster draws recorded (after culling).
-  uint32_t record(VkCommandBuffer cmd, const GpuScene& scene,
+  // model matrices; `sceneUpload` tells uploads apart (Renderer::uploadCount).
+  // With `keep`, layers whose inputs are unchanged since their last draw
+  // are left as they are. Returns the caster draws recorded (after culling).
+  uint32_t record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
                   std::span<const glm::mat4> objectTransforms,
-                  std::span<const glm::mat4> worldToLightClip);
+                  std::span<const glm::mat4> worldToLightClip, bool keep);
 
   // The array (or a 1x1 placeholder before prepare) and its compare sampler.
   VkImageView view() const { return map_ ? map_.view() : placeholder_.view(); }
@@ -45,6 +53,10 @@ class ShadowPass {
   Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
   Image map_;
   std::vector<ImageView> layerViews_;  // one per layer: the attachment of its pass
+  // Per layer, what it was last drawn from: the view matrix, then each
+  // caster's draw index and model matrix (empty: never drawn).
+  std::vector<std::vector<float>> drawnFrom_;
+  uint32_t drawnUpload_ = 0;
 };
 
 }  // namespace shadelab

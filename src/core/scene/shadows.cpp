@@ -76,6 +76,10 @@ ShadowView pointShadowView(const Light& light, const Bounds& scene, uint32_t map
     view.viewProjection.push_back(projection *
                                   lookAt(light.position, light.position + axis, upFor(axis)));
   view.texelSize = 2.0f * halfTangent / float(mapSize);
+  // perspective()'s rows, written out: depth = (far / (far - near)) -
+  // (far near / (far - near)) / distance along the face's axis; xy scaled by
+  // cot(half angle) = 1 / halfTangent.
+  view.cube = glm::vec4(far / (far - near), far * near / (far - near), 1.0f / halfTangent, 0.0f);
   return view;
 }
 
@@ -84,6 +88,29 @@ int cubeFace(glm::vec3 v) {
   if (a.x >= a.y && a.x >= a.z) return v.x >= 0.0f ? 0 : 1;
   if (a.y >= a.z) return v.y >= 0.0f ? 2 : 3;
   return v.z >= 0.0f ? 4 : 5;
+}
+
+CubeMapPoint cubeFaceCoordinates(glm::vec3 v, glm::vec4 cube) {
+  // Each face's (right, up) as lookAt(light, light + axis, upFor(axis))
+  // builds them: +x (z, y), -x (-z, y), +y (x, z), -y (-x, z), +z (-x, y), -z (x, y).
+  CubeMapPoint point;
+  point.face = cubeFace(v);
+  glm::vec3 a = glm::abs(v);
+  float major = 0.0f, right = 0.0f, up = 0.0f;
+  switch (point.face / 2) {
+    case 0:
+      major = a.x, right = v.x >= 0.0f ? v.z : -v.z, up = v.y;
+      break;
+    case 1:
+      major = a.y, right = v.y >= 0.0f ? v.x : -v.x, up = v.z;
+      break;
+    default:
+      major = a.z, right = v.z >= 0.0f ? -v.x : v.x, up = v.y;
+      break;
+  }
+  // Vulkan's clip space runs y down: up is -y.
+  point.ndc = glm::vec3(cube.z * right / major, -cube.z * up / major, cube.x - cube.y / major);
+  return point;
 }
 
 }  // namespace shadelab

@@ -44,8 +44,10 @@ inline constexpr float kMaxSlopeTangent = 10.0f;
 
 inline constexpr uint32_t kDefaultShadowMapSize = 2048;
 // What the command line and the viewer draw unless told otherwise (the
-// library's FrameSettings default stays Off). Chosen by measurement: README.md.
-inline constexpr ShadowMethod kDefaultShadowMethod = ShadowMethod::Pcf3;
+// library's FrameSettings default stays Off). Chosen by measurement
+// (README.md, "Shadows"): against the traced reference, whose shadows are
+// hard, one tap is both the cheapest and the closest of the filters.
+inline constexpr ShadowMethod kDefaultShadowMethod = ShadowMethod::Hard;
 
 // The light's view-projection matrices, world space to Vulkan clip space:
 // one for a directional light, six (+x, -x, +y, -y, +z, -z) for a point light.
@@ -54,6 +56,10 @@ struct ShadowView {
   // World size of one texel: at the map (directional) or per unit of
   // distance from the light (point: multiply by the distance).
   float texelSize = 0.0f;
+  // Point light: its faces' projection as gpu::ShadowData::cube holds it
+  // (depth = x - y / major axis, face xy = z * (right, up) / major axis),
+  // what cubeFaceCoordinates() computes; zero for a directional light.
+  glm::vec4 cube{0.0f};
 };
 
 // Directional light: an orthographic box along the light whose sides are
@@ -74,5 +80,15 @@ ShadowView pointShadowView(const Light& light, const Bounds& sceneBounds, uint32
 // to a point: the major axis (+x, -x, +y, -y, +z, -z = 0..5). The GLSL twin is
 // cubeFace() in shaders/shadows.glsl.
 int cubeFace(glm::vec3 fromLight);
+
+// Where a point light's map holds the direction `fromLight` (world space):
+// its face, that face's clip xy (-1..1) and depth (0..1), the same numbers
+// as viewProjection[face] gives, found without the matrix. `cube` is
+// ShadowView::cube. The GLSL twin is in shaders/shadows.glsl.
+struct CubeMapPoint {
+  int face = 0;
+  glm::vec3 ndc{0.0f};
+};
+CubeMapPoint cubeFaceCoordinates(glm::vec3 fromLight, glm::vec4 cube);
 
 }  // namespace shadelab

@@ -29,9 +29,10 @@ static_assert(offsetof(gpu::DrawConstants, object) == 48);
 static_assert(offsetof(gpu::DrawConstants, texturing) == 64);
 static_assert(offsetof(gpu::DrawConstants, optics) == 80);
 static_assert(sizeof(gpu::DrawConstants) == 96);  // within the 128 bytes Vulkan guarantees
-static_assert(offsetof(gpu::ShadowData, bias) == 16 * MAX_LIGHTS);
-static_assert(offsetof(gpu::ShadowData, eyeToLight) == 16 * MAX_LIGHTS + 16);
-static_assert(sizeof(gpu::ShadowData) == 16 * MAX_LIGHTS + 16 + 64 * MAX_SHADOW_VIEWS);
+static_assert(offsetof(gpu::ShadowData, cube) == 16 * MAX_LIGHTS);
+static_assert(offsetof(gpu::ShadowData, bias) == 32 * MAX_LIGHTS);
+static_assert(offsetof(gpu::ShadowData, eyeToLight) == 32 * MAX_LIGHTS + 16);
+static_assert(sizeof(gpu::ShadowData) == 32 * MAX_LIGHTS + 16 + 64 * MAX_LIGHTS);
 static_assert(sizeof(gpu::SkyParameters) == 96);
 static_assert(offsetof(gpu::SkyParameters, face) == 80);
 static_assert(sizeof(gpu::SkyboxConstants) == 80);
@@ -229,10 +230,11 @@ ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const 
             : directionalShadowView(light, gpuScene.bounds, projection * view, mapSize);
     frame.data.lights[slot] =
         glm::vec4(float(first), shadowView.texelSize, 1.0f / float(mapSize), 0.0f);
-    for (size_t face = 0; face < shadowView.viewProjection.size(); ++face) {
+    frame.data.cube[slot] = shadowView.cube;
+    if (light.type == LightType::Directional)
+      frame.data.eyeToLight[slot] = shadowView.viewProjection[0] * eyeToWorld;
+    for (size_t face = 0; face < shadowView.viewProjection.size(); ++face)
       frame.worldToLightClip[size_t(first) + face] = shadowView.viewProjection[face];
-      frame.data.eyeToLight[size_t(first) + face] = shadowView.viewProjection[face] * eyeToWorld;
-    }
   }
   return frame;
 }
