@@ -754,6 +754,23 @@ TEST_F(Cli, StudyShadowBiasMeasuresAcneFallingWithBias) {
   expectDrawnChart(out("sb/shadow_bias.png"));
 }
 
+TEST_F(Cli, StudyShadowGrazingKeepsTheDefaultBiasFreeOfAcne) {
+  CommandResult r = run("study shadow-grazing -o " + out("sg") + " --size 160x90");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("sg/shadow_grazing.csv")));
+  ASSERT_EQ(rows.size(), 1u + 6 * 2 * 2) << "header + 6 elevations x 2 methods x 2 biases";
+  EXPECT_EQ(rows[0][4], "acne_percent");
+  for (size_t i = 1; i < rows.size(); ++i) {
+    double acne = std::stod(rows[i][4]);
+    if (rows[i][2] == "none")
+      EXPECT_GT(acne, 1.0) << "no bias at " << rows[i][0] << " degrees";
+    else
+      EXPECT_LT(acne, 0.1) << "default bias at " << rows[i][0] << " degrees";
+    EXPECT_LT(std::stod(rows[i][6]), 1.0) << "peter-panning at " << rows[i][0] << " degrees";
+  }
+  expectDrawnChart(out("sg/shadow_grazing.png"));
+}
+
 TEST_F(Cli, StudyShadowEdgesMeasuresErrorAgainstMapSize) {
   CommandResult r = run("study shadow-edges -o " + out("se") + " --size 160x90");
   ASSERT_EQ(r.exitCode, 0) << r.output;

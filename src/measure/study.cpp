@@ -13,6 +13,7 @@ StudyResult runEnvVsTraceStudy(const StudyOptions& options, const StudyServices&
 StudyResult runBumpSilhouetteStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runShadowBiasStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runShadowEdgesStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runShadowGrazingStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -46,6 +47,10 @@ const std::vector<Study>& studies() {
       {"shadow-edges",
        "shadow-map size and filter against the traced shadow edges: mean FLIP and frame time", 480,
        270, runShadowEdgesStudy},
+      {"shadow-grazing",
+       "the sun lowered to a grazing angle: acne and peter-panning with no bias and the default "
+       "one, hard and pcf3, against the tracer's exact shadow rays",
+       320, 180, runShadowGrazingStudy},
   };
   return table;
 }
