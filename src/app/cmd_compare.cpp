@@ -87,7 +87,7 @@ void splitByRegion(const MetricMap& flip, const ReflectionRegions& regions,
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Size cell = parseSize(options.size, "--size");
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
-  checkSamplesPerPixel(options.samplesPerPixel);
+  checkSamplesPerPixel(options.samplesPerPixel, "--spp");
   Reference reference = findReference(options.reference, "--reference");
   if (reference.name == "trace")
     reference =

@@ -47,7 +47,7 @@ float parseEpsilon(const std::string& text) {
 
 int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
-  checkSamplesPerPixel(options.samplesPerPixel);
+  checkSamplesPerPixel(options.samplesPerPixel, "--spp");
   bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
   bool fresnel = parseNamed(kOnOffNames, options.fresnel, "--fresnel");
   const float epsilon =

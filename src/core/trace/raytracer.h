@@ -169,8 +169,9 @@ class RayTracer {
   std::vector<TraceTexture> textures_;  // parallel to Scene::textures
 };
 
-// Throws InputError unless `samplesPerPixel` is a square n * n, 1..256.
-void checkSamplesPerPixel(uint32_t samplesPerPixel);
+// Throws InputError unless `samplesPerPixel` is a square n * n, 1..256; the
+// message begins with `name` (the command line passes its option, "--spp").
+void checkSamplesPerPixel(uint32_t samplesPerPixel, const std::string& name = "samples per pixel");
 
 // The colour of a ray that hits nothing: the environment's radiance along
 // it (core/scene/environment.h, the same orientation and intensity the cube map
