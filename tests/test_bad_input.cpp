@@ -131,7 +131,24 @@ const std::vector<BadCase>& badCases() {
          }()}},
        render + "{dir}/spheres.json",
        2,
-       kError + "scene 'spheres' at --tess 1: an estimated"},
+       kError + "scene 'spheres' at its own tessellation (before building): an estimated "
+                "41861120 triangles"},
+      {Group::Options,
+       "64 distinct planes of tessellation 1024",
+       {{"planes.json",
+         [] {
+           // 64 different meshes of 2 M triangles each: 134 M triangles,
+           // gigabytes and minutes if built before the budget is checked.
+           std::string objects;
+           for (int i = 0; i < 64; ++i)
+             objects += std::string(i ? "," : "") + R"({"shape": "plane", "tessellation": 1024, )" +
+                        R"("size": )" + std::to_string(i + 1) + "}";
+           return R"({"objects": [)" + objects + "]}";
+         }()}},
+       render + "{dir}/planes.json",
+       2,
+       kError + "scene 'planes' at its own tessellation (before building): an estimated "
+                "134217728 triangles drawn ("},
       {Group::Options,
        "max-triangles zero",
        {},

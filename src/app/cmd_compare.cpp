@@ -100,7 +100,7 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     throw InputError("output '" + options.output + "': expected a .png file name");
   checkOutputPath(sheetPath);
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
   checkTriangleBudget(scene, 4.0f, global.maxTriangles, "compare (its raster reference is 4x)",
                       "--max-triangles");

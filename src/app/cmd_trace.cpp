@@ -53,7 +53,7 @@ int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   const float epsilon =
       options.epsilon.empty() ? TraceSettings{}.epsilon : parseEpsilon(options.epsilon);
   checkOutputPath(options.output);  // fail before the expensive work
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   checkTriangleBudget(scene, 1.0f, global.maxTriangles, "trace", "--max-triangles");
   printSceneWarnings(scene, false);
