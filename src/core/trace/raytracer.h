@@ -130,6 +130,10 @@ class RayTracer {
   // than the rasterised mesh.
   // `scene` must outlive the tracer.
   explicit RayTracer(const Scene& scene, float tessellationScale = 4.0f);
+  // A temporary scene would not: `RayTracer tracer(makeScene())` kept a
+  // reference to a destroyed Scene (ASan: stack-use-after-scope when render
+  // read its camera). Refused at compile time.
+  explicit RayTracer(Scene&& scene, float tessellationScale = 4.0f) = delete;
   ~RayTracer();
   RayTracer(const RayTracer&) = delete;
   RayTracer& operator=(const RayTracer&) = delete;
