@@ -2,7 +2,7 @@
 # Fuzzes the glTF loader with libFuzzer (clang-14 with ASan and UBSan, the
 # `fuzz` preset) for SECONDS (default 60), after the mutation replay every
 # build runs; seeds from tests/fuzz/corpus, keys from tests/fuzz/gltf.dict.
-#   scripts/fuzz.sh [SECONDS]
+#   scripts/fuzz.sh [SECONDS]     (CMAKE_BUILD_PARALLEL_LEVEL: build jobs, default 2)
 # Installs clang-14 and its runtime libraries if missing; the project's
 # other packages come from scripts/setup.sh. Exit 0: no crash.
 set -euo pipefail
@@ -17,5 +17,5 @@ done
 seconds=${1:-60}
 [[ $seconds =~ ^[0-9]+$ ]] || { echo "usage: scripts/fuzz.sh [SECONDS]" >&2; exit 2; }
 cmake --preset fuzz -D SHADELAB_FUZZ_SECONDS="$seconds" >/dev/null
-cmake --build --preset fuzz -j 2
+cmake --build --preset fuzz -j "${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
 ctest --preset fuzz

@@ -67,6 +67,24 @@ std::string gltfWithBuffer(const std::string& uri) {
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
 }
+// A PNG header (signature, IHDR, IEND; no pixels) that declares 16384x16384
+// RGBA texels: 45 bytes that would decode to 1 GiB.
+const std::string kHugePngBase64 = "iVBORw0KGgoAAAANSUhEUgAAQAAAAEAACAYAAACpyBCEAAAAAElFTkSuQmCC";
+// A triangle whose buffer is a data URI: the 36 bytes of its positions,
+// then the 45 of kHugePngBase64 (views 0 and 1), plus `images`.
+std::string gltfWithImages(const std::string& images) {
+  return R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 81, "uri":
+  "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA)" +
+         kHugePngBase64 + R"("}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 45},
+                  {"buffer": 0, "byteOffset": 40, "byteLength": 4000000}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}],
+  "images": )" +
+         images + R"(,
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+}
 std::string nested(const std::string& open, const std::string& close, int depth) {
   std::string text;
   for (int i = 0; i < depth; ++i) text += open;
@@ -86,7 +104,7 @@ const std::vector<BadCase>& badCases() {
        {},
        render + "--size 65536x65536",
        2,
-       kError + "size 65536x65536: width and height must be 1..16384"},
+       kError + "--size '65536x65536': width and height must be 1..16384"},
       {Group::Options, "unknown mode", {}, render + "--mode toon", 2, kError + "--mode 'toon'"},
       {Group::Options, "tess zero", {}, render + "--tess 0", 2, kError + "--tess '0'"},
       {Group::Options, "tess above 16", {}, render + "--tess 17", 2, kError + "--tess '17'"},
@@ -113,7 +131,24 @@ const std::vector<BadCase>& badCases() {
          }()}},
        render + "{dir}/spheres.json",
        2,
-       kError + "scene 'spheres' at --tess 1: an estimated"},
+       kError + "scene 'spheres' at its own tessellation (before building): an estimated "
+                "41861120 triangles"},
+      {Group::Options,
+       "64 distinct planes of tessellation 1024",
+       {{"planes.json",
+         [] {
+           // 64 different meshes of 2 M triangles each: 134 M triangles,
+           // gigabytes and minutes if built before the budget is checked.
+           std::string objects;
+           for (int i = 0; i < 64; ++i)
+             objects += std::string(i ? "," : "") + R"({"shape": "plane", "tessellation": 1024, )" +
+                        R"("size": )" + std::to_string(i + 1) + "}";
+           return R"({"objects": [)" + objects + "]}";
+         }()}},
+       render + "{dir}/planes.json",
+       2,
+       kError + "scene 'planes' at its own tessellation (before building): an estimated "
+                "134217728 triangles drawn ("},
       {Group::Options,
        "max-triangles zero",
        {},
@@ -163,7 +198,7 @@ const std::vector<BadCase>& badCases() {
        {},
        "trace -o {dir}/t.png --size 8x8 --spp 3",
        2,
-       kError + "samples per pixel 3: expected a square number"},
+       kError + "--spp 3: expected a square number n*n from 1 to 256"},
       {Group::Options,
        "compare unknown mode",
        {},
@@ -493,6 +528,34 @@ const std::vector<BadCase>& badCases() {
        render + "{dir}/m.glb",
        2,
        kError + "{dir}/m.glb: invalid GLB: version 99"},
+      {Group::Gltf,
+       "data URI image declares 16384 square",
+       {{"m.gltf",
+         gltfWithImages(R"([{"uri": "data:image/png;base64,)" + kHugePngBase64 + R"("}])")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: images[0]: 16384x16384 texels, more than the 8192 "
+                "allowed on a side"},
+      {Group::Gltf,
+       "bufferView image declares 16384 square",
+       {{"m.gltf", gltfWithImages(R"([{"bufferView": 1, "mimeType": "image/png"}])")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: images[0]: 16384x16384 texels, more than the 8192 "
+                "allowed on a side"},
+      {Group::Gltf,
+       "bufferView image past its buffer",
+       {{"m.gltf", gltfWithImages(R"([{"bufferView": 2, "mimeType": "image/png"}])")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: images[0]: bufferView 2 (bytes 40 + 4000000) lies "
+                "outside its buffer's 81 bytes"},
+      {Group::Gltf,
+       "image neither PNG nor JPEG",
+       {{"m.gltf", gltfWithImages(R"([{"uri": "data:image/png;base64,Qk0AAAAA"}])")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: images[0]: not a PNG or JPEG image"},
       {Group::Gltf,
        "nested 200000 deep",
        {{"m.gltf", R"({"asset": {"version": "2.0"}, "extras": )" + nested("[", "]", 200000) + "}"}},

@@ -120,7 +120,8 @@ TEST(RayTracer, RotatedScaledBoxIsIntersectedInObjectSpace) {
   ShapeDesc box{ShapeKind::Box};
   box.halfExtents = glm::vec3(0.5f);
   // Scaled to 2 x 1 x 1 along x, then turned 90 degrees about y: 2 deep in z.
-  RayTracer tracer(oneObject(box, rotationY(glm::radians(90.0f)) * scaling({2, 1, 1})));
+  const Scene scene = oneObject(box, rotationY(glm::radians(90.0f)) * scaling({2, 1, 1}));
+  RayTracer tracer(scene);
   std::optional<SurfaceHit> hit = tracer.intersect({{0.2f, 0.1f, 5}, {0, 0, -1}}, 0.0f, kInf);
   ASSERT_TRUE(hit.has_value());
   EXPECT_NEAR(hit->t, 4.0f, 1e-5f);
@@ -153,7 +154,8 @@ TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
   ShapeDesc sphere{ShapeKind::Icosphere};
   sphere.radius = 1.0f;
   sphere.tessellation = 1;
-  RayTracer tracer(oneObject(sphere, glm::mat4(1.0f)));
+  const Scene scene = oneObject(sphere, glm::mat4(1.0f));
+  RayTracer tracer(scene);
   std::optional<SurfaceHit> hit = tracer.intersect({{0, 0, 0}, {0, 1, 0}}, 0.0f, kInf);
   ASSERT_TRUE(hit.has_value());
   EXPECT_FALSE(hit->frontFace);
@@ -307,7 +309,8 @@ TEST(RayTracer, RecursionStopsAtTheDepthOrTheContributionThreshold) {
 
 TEST(RayTracer, ProgressRisesInTenthsToOne) {
   ShapeDesc sphere{ShapeKind::UvSphere};
-  RayTracer tracer(oneObject(sphere, glm::mat4(1.0f)));
+  const Scene scene = oneObject(sphere, glm::mat4(1.0f));
+  RayTracer tracer(scene);
   TraceSettings settings;
   settings.width = 8, settings.height = 40, settings.threads = 1;
   std::vector<float> reports;

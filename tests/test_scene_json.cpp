@@ -525,6 +525,33 @@ TEST(SceneJson, NestingDepthIsLimited) {
               HasSubstr("objects nested more than 64 levels deep"));
 }
 
+// The file's procedural meshes are estimated before any is built: above the
+// budget the file is refused naming the option; within it every mesh is
+// built as Scene::addShape builds it, shared meshes once.
+TEST(SceneJson, TriangleBudgetIsCheckedBeforeMeshesAreBuilt) {
+  const char* text = R"({"objects": [{"shape": "plane", "tessellation": 64},
+    {"shape": "sphere", "tessellation": 32}, {"shape": "plane", "tessellation": 64}]})";
+  // planes: 2 * 64 * 64 = 8192 triangles each; the sphere 2 * 32 * 15 = 960.
+  EXPECT_THAT(errorFrom([&] {
+                parseSceneJson(text, "s.json", {17343, "--budget"});
+              }),
+              HasSubstr("scene 's' at its own tessellation (before building): an estimated 17344 "
+                        "triangles drawn"));
+  EXPECT_THAT(errorFrom([&] {
+                parseSceneJson(text, "s.json", {17343, "--budget"});
+              }),
+              HasSubstr("more than --budget 17343"));
+  Scene scene = parseSceneJson(text, "s.json", {17344, "--budget"});
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  EXPECT_EQ(scene.objects[0].mesh, scene.objects[2].mesh);
+  EXPECT_EQ(scene.triangleCount(), 17344u);
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    Mesh built = buildShape(scene.shapes[i]);
+    EXPECT_EQ(scene.meshes[i].indices, built.indices) << i;
+    EXPECT_EQ(scene.meshes[i].vertices.size(), built.vertices.size()) << i;
+  }
+}
+
 std::filesystem::path writeTempFile(const std::string& name, const std::string& contents) {
   std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;
   std::ofstream(path) << contents;

@@ -9,6 +9,12 @@
 #include "core/base/files.h"
 
 namespace shadelab {
+namespace {
+// The largest width or height any command accepts: lavapipe's
+// maxImageDimension2D and the tracer's limit. (A device with a smaller limit
+// is still refused by Renderer::validate, after the device is open.)
+constexpr uint32_t kMaxImageSide = 16384;
+}  // namespace
 
 Size parseSize(const std::string& text, const std::string& option) {
   static const std::regex pattern(R"((\d{1,6})x(\d{1,6}))");
@@ -18,8 +24,10 @@ Size parseSize(const std::string& text, const std::string& option) {
   Size size;
   std::from_chars(&*match[1].first, &*match[1].first + match[1].length(), size.width);
   std::from_chars(&*match[2].first, &*match[2].first + match[2].length(), size.height);
-  if (size.width == 0 || size.height == 0)
-    throw InputError(option + " '" + text + "': width and height must be at least 1");
+  if (size.width == 0 || size.height == 0 || size.width > kMaxImageSide ||
+      size.height > kMaxImageSide)
+    throw InputError(option + " '" + text + "': width and height must be 1.." +
+                     std::to_string(kMaxImageSide));
   return size;
 }
 

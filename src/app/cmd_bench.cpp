@@ -131,7 +131,7 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
                      errorMetrics()};
   const ErrorMetric& charted = findErrorMetric(options.metric, "--metric");
   size_t chartedIndex = size_t(&charted - errorMetrics().data());
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene, {global.maxTriangles});
   checkOutputFolder(options.output, "results.csv");  // made only with the results
   std::vector<BenchPoint> points = benchPoints(axes);
   // The raster reference is 4x; the sweep's finest point may be finer.

@@ -87,7 +87,7 @@ void splitByRegion(const MetricMap& flip, const ReflectionRegions& regions,
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Size cell = parseSize(options.size, "--size");
   std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
-  checkSamplesPerPixel(options.samplesPerPixel);
+  checkSamplesPerPixel(options.samplesPerPixel, "--spp");
   Reference reference = findReference(options.reference, "--reference");
   if (reference.name == "trace")
     reference =
@@ -100,7 +100,7 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     throw InputError("output '" + options.output + "': expected a .png file name");
   checkOutputPath(sheetPath);
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
   checkTriangleBudget(scene, 4.0f, global.maxTriangles, "compare (its raster reference is 4x)",
                       "--max-triangles");

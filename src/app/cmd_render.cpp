@@ -134,7 +134,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   if (options.quality) checkMetricBound(metric, *options.quality, "--quality");
   const Reference& reference = findReference(options.reference, "--reference");
   checkOutputPath(options.output);  // fail before the expensive work
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);

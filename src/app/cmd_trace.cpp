@@ -47,13 +47,13 @@ float parseEpsilon(const std::string& text) {
 
 int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
-  checkSamplesPerPixel(options.samplesPerPixel);
+  checkSamplesPerPixel(options.samplesPerPixel, "--spp");
   bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
   bool fresnel = parseNamed(kOnOffNames, options.fresnel, "--fresnel");
   const float epsilon =
       options.epsilon.empty() ? TraceSettings{}.epsilon : parseEpsilon(options.epsilon);
   checkOutputPath(options.output);  // fail before the expensive work
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   checkTriangleBudget(scene, 1.0f, global.maxTriangles, "trace", "--max-triangles");
   printSceneWarnings(scene, false);

@@ -46,7 +46,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
     viewer.script = parseViewerScript(options.script, Viewer::keyNames());
   const char* shaders = std::getenv("SHADELAB_SHADER_DIR");
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
-  Scene scene = loadScene(options.scene);
+  Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   checkTriangleBudget(scene, viewer.tessellation, global.maxTriangles,
                       "--tess " + options.tessellation, "--max-triangles");

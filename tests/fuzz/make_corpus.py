@@ -9,6 +9,7 @@ import base64
 import json
 import os
 import struct
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CORPUS = os.path.join(HERE, "corpus")
@@ -68,6 +69,53 @@ def attribute_seed(name, kind, component):
     return triangle(extra=add)
 
 
+def png(width, height, pixels=True):
+    """An RGBA PNG; without pixels, only the header that declares its size."""
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    header = chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+    rows = b"".join(b"\0" + b"\xff\x80\x00\xff" * width for _ in range(height)) if pixels else b""
+    body = chunk(b"IDAT", zlib.compress(rows)) if pixels else b""
+    return b"\x89PNG\r\n\x1a\n" + header + body + chunk(b"IEND", b"")
+
+
+# A JPEG's first segments up to a baseline frame header of 16384 x 16384.
+JPEG_HEADER = (b"\xff\xd8\xff\xe0\x00\x10JFIF\x00\x01\x01\x00\x00\x01\x00\x01\x00\x00"
+               b"\xff\xc0\x00\x11\x08\x40\x00\x40\x00\x03" + b"\x00" * 9)
+
+
+def image_seed(image=None, in_buffer=None, view=None):
+    """A textured triangle (TEXCOORD_0, a material with a base colour texture)
+    whose image is `image` (an images[] entry), or `in_buffer` bytes in
+    bufferView 3 with `view` overriding that view's fields."""
+    def add(doc):
+        payload = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
+        offset = (len(payload) + 3) // 4 * 4
+        payload = payload.ljust(offset, b"\0") + struct.pack("<6f", 0, 0, 1, 0, 0, 1)
+        doc["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": 24})
+        doc["accessors"].append({"bufferView": 2, "componentType": 5126, "count": 3,
+                                 "type": "VEC2"})
+        primitive = doc["meshes"][0]["primitives"][0]
+        primitive["attributes"]["TEXCOORD_0"] = 2
+        primitive["material"] = 0
+        doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+        doc["textures"] = [{"source": 0}]
+        entry = image
+        if in_buffer is not None:
+            start = len(payload)
+            payload += in_buffer
+            doc["bufferViews"].append(dict({"buffer": 0, "byteOffset": start,
+                                            "byteLength": len(in_buffer)}, **(view or {})))
+            entry = {"bufferView": 3, "mimeType": "image/png"}
+        doc["images"] = [entry]
+        doc["buffers"][0] = {"byteLength": len(payload), "uri": data_uri(payload)}
+    return triangle(extra=add)
+
+
+def png_uri(data):
+    return "data:image/png;base64," + base64.b64encode(data).decode()
+
+
 def glb(doc):
     """The document as GLB, its buffer moved into the BIN chunk."""
     payload = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
@@ -112,6 +160,20 @@ def seeds():
     chain = [{"children": [i + 1]} for i in range(63)] + [{"mesh": 0}]
     yield "deep_nodes.gltf", triangle(extra=lambda doc: doc.update(nodes=chain))
     yield "cycle.gltf", triangle(extra=lambda doc: doc.update(nodes=[{"children": [0], "mesh": 0}]))
+    # Images: embedded as data URIs and in bufferViews, sizes declared in
+    # headers past the 8192 limit, views past their buffer, not PNG at all.
+    yield "image_uri.gltf", image_seed({"uri": png_uri(png(2, 2))})
+    yield "image_uri_huge.gltf", image_seed({"uri": png_uri(png(16384, 16384, pixels=False))})
+    yield "image_uri_jpeg_huge.gltf", image_seed(
+        {"uri": "data:image/jpeg;base64," + base64.b64encode(JPEG_HEADER).decode()})
+    yield "image_uri_not_png.gltf", image_seed({"uri": png_uri(b"BM" + b"\0" * 60)})
+    yield "image_view.gltf", image_seed(in_buffer=png(2, 2))
+    yield "image_view_huge.gltf", image_seed(in_buffer=png(16384, 16384, pixels=False))
+    for i, value in enumerate(NEAR_LIMITS):
+        yield f"image_view_offset_{i}.gltf", image_seed(in_buffer=png(2, 2),
+                                                        view={"byteOffset": value})
+        yield f"image_view_length_{i}.gltf", image_seed(in_buffer=png(2, 2),
+                                                        view={"byteLength": value})
 
 
 def main():
@@ -120,7 +182,8 @@ def main():
         with open(os.path.join(CORPUS, name), "w") as out:
             json.dump(doc, out, separators=(",", ":"))
     for name, doc in [("triangle.glb", triangle()),
-                      ("glb_position_count.glb", triangle(position={"count": 2**62}))]:
+                      ("glb_position_count.glb", triangle(position={"count": 2**62})),
+                      ("glb_image_view.glb", image_seed(in_buffer=png(2, 2)))]:
         with open(os.path.join(CORPUS, name), "wb") as out:
             out.write(glb(doc))
     keys = ["asset", "version", "buffers", "bufferViews", "accessors", "meshes", "primitives",
@@ -134,7 +197,9 @@ def main():
             "perspective", "orthographic", "yfov", "znear", "zfar", "mimeType"]
     keys += list(TYPES) + list(ATTRIBUTES)
     values = [str(c) for c in COMPONENTS] + [str(v) for v in NEAR_LIMITS]
-    values += ["data:application/octet-stream;base64,", "glTF", "JSON", "BIN\\x00", "-1", "1e308"]
+    values += ["data:application/octet-stream;base64,", "glTF", "JSON", "BIN\\x00", "-1", "1e308",
+               "data:image/png;base64,", "data:image/jpeg;base64,", "image/png", "image/jpeg",
+               "\\x89PNG", "IHDR", "\\xff\\xd8\\xff\\xc0"]
     with open(os.path.join(HERE, "gltf.dict"), "w") as out:
         out.write("# libFuzzer dictionary: glTF keys and values (tests/fuzz/make_corpus.py)\n")
         for word in keys:

@@ -5,14 +5,18 @@
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/json_nesting.h"
+#include "core/scene/encoded_image.h"
 #include "core/scene/frustum.h"
 #include "core/scene/gltf_detail.h"
+#include "core/scene/texture.h"
 #include "core/scene/transform.h"
 #include "interface.h"
 
@@ -85,6 +89,49 @@ bool refuseWrite(std::string*, const std::string&, const std::vector<unsigned ch
   return false;
 }
 
+// Every image tinygltf decodes (data URIs, bufferViews, external files) comes
+// here first, with `userData` the model being filled (its buffers and
+// bufferViews are read before its images).
+// - An image in a bufferView: tinygltf 2.7 hands over &buffer.data[byteOffset]
+//   and byteLength unchecked, so a view past its buffer (or into a buffer
+//   that failed to load) would be read out of bounds; the view must lie
+//   inside the buffer's data.
+// - Its header must declare a PNG or JPEG (the formats glTF 2.0 allows) of at
+//   most kMaxTextureSide texels a side, as for texture files, before a byte
+//   is decoded.
+bool loadImageChecked(tinygltf::Image* image, const int index, std::string* error,
+                      std::string* warning, int requiredWidth, int requiredHeight,
+                      const unsigned char* bytes, int size, void* userData) {
+  std::string name = "images[" + std::to_string(index) + "]";
+  auto refuse = [&](const std::string& what) {
+    if (error) *error += name + ": " + what;
+    return false;
+  };
+  const auto* model = static_cast<const tinygltf::Model*>(userData);
+  if (image->bufferView >= 0) {
+    // tinygltf checked both indices before calling.
+    const tinygltf::BufferView& view = model->bufferViews.at(size_t(image->bufferView));
+    const tinygltf::Buffer& buffer = model->buffers.at(size_t(view.buffer));
+    size_t end = 0;
+    if (__builtin_add_overflow(view.byteOffset, view.byteLength, &end) ||
+        end > buffer.data.size() || view.byteLength > size_t(std::numeric_limits<int>::max()))
+      return refuse("bufferView " + std::to_string(image->bufferView) + " (bytes " +
+                    std::to_string(view.byteOffset) + " + " + std::to_string(view.byteLength) +
+                    ") lies outside its buffer's " + std::to_string(buffer.data.size()) + " bytes");
+    bytes = buffer.data.data() + view.byteOffset;
+    size = int(view.byteLength);
+  }
+  std::optional<EncodedImageSize> declared = encodedImageSize(bytes, size_t(std::max(size, 0)));
+  if (!declared) return refuse("not a PNG or JPEG image (glTF 2.0 allows only these)");
+  if (declared->width > kMaxTextureSide || declared->height > kMaxTextureSide)
+    return refuse(std::to_string(declared->width) + "x" + std::to_string(declared->height) +
+                  " texels, more than the " + std::to_string(kMaxTextureSide) +
+                  " allowed on a side");
+  // nullptr: tinygltf's default options (4 channels).
+  return tinygltf::LoadImageData(image, index, error, warning, requiredWidth, requiredHeight, bytes,
+                                 size, nullptr);
+}
+
 std::string trimmed(std::string text) {
   while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
   std::replace(text.begin(), text.end(), '\n', ';');
@@ -128,6 +175,7 @@ tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& so
   else
     loader.SetFsCallbacks({&noFileExists, &keepPath, &refuseRead, &refuseWrite, nullptr});
   tinygltf::Model model;
+  loader.SetImageLoader(&loadImageChecked, &model);
   std::string error, warning;
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (bytes.size() > std::numeric_limits<unsigned int>::max())

@@ -496,6 +496,14 @@ class ObjectBuilder {
     for (const Field& child : list) add(child, world, depth + 1);
   }
 
+  // Procedural meshes are described now and built by buildShapes(), after
+  // the whole file has been read and its cost estimated (Scene::estimate
+  // reads the descriptions, not the meshes).
+  void buildShapes() {
+    for (uint32_t i : unbuilt_) scene_.meshes[i] = buildShape(scene_.shapes[i]);
+    unbuilt_.clear();
+  }
+
  private:
   Material material(const Field& object, const std::string& objectName) const {
     if (!object.has("material")) return Material{};
@@ -526,13 +534,17 @@ class ObjectBuilder {
   uint32_t mesh(const ShapeDesc& shape) {
     for (uint32_t i = 0; i < scene_.shapes.size(); ++i)
       if (sameShape(scene_.shapes[i], shape)) return i;
-    return scene_.addShape(shape);
+    scene_.meshes.emplace_back();
+    scene_.shapes.push_back(shape);
+    unbuilt_.push_back(uint32_t(scene_.meshes.size() - 1));
+    return unbuilt_.back();
   }
 
   Scene& scene_;
   const MaterialTable& materials_;
   TextureLibrary& textures_;
   std::filesystem::path baseDirectory_;
+  std::vector<uint32_t> unbuilt_;  // Scene::meshes slots still empty
 };
 
 // "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error ..."
@@ -585,7 +597,8 @@ nlohmann::json parseDocument(std::string_view text, const std::string& source) {
 
 }  // namespace
 
-Scene parseSceneJson(std::string_view text, const std::string& sourceName) {
+Scene parseSceneJson(std::string_view text, const std::string& sourceName,
+                     const TriangleBudget& budget) {
   nlohmann::json document = parseDocument(text, sourceName);
   Field root(document, "", sourceName);
   root.expectObject({"description", "camera", "ambient", "background", "environment", "lights",
@@ -608,17 +621,20 @@ Scene parseSceneJson(std::string_view text, const std::string& sourceName) {
   Field objects = root.required("objects", "an array of objects (it may be empty)");
   for (const Field& object : objects.elements("an array of objects"))
     builder.add(object, glm::mat4(1.0f), 0);
+  checkTriangleBudget(scene, 1.0f, budget.maxTriangles, "its own tessellation (before building)",
+                      budget.option);
+  builder.buildShapes();
   return scene;
 }
 
-Scene loadSceneJson(const std::filesystem::path& path) {
+Scene loadSceneJson(const std::filesystem::path& path, const TriangleBudget& budget) {
   std::string name = path.string();
   std::error_code error;
   if (!std::filesystem::exists(path, error))
     throw InputError("scene file '" + name + "' does not exist");
   if (std::filesystem::is_directory(path, error))
     throw InputError("scene file '" + name + "' is a directory, expected a .json file");
-  return parseSceneJson(readInputFile(path, "scene file", kMaxTextInputBytes), name);
+  return parseSceneJson(readInputFile(path, "scene file", kMaxTextInputBytes), name, budget);
 }
 
 }  // namespace shadelab

@@ -8,7 +8,7 @@
 
 namespace shadelab {
 
-Scene loadScene(const std::string& nameOrPath) {
+Scene loadScene(const std::string& nameOrPath, const TriangleBudget& budget) {
   if (nameOrPath.empty()) return builtinScene("default");
   std::filesystem::path path(nameOrPath);
   std::string ext = path.extension().string();
@@ -17,7 +17,7 @@ Scene loadScene(const std::string& nameOrPath) {
   if (looksLikeFile) {
     if (!std::filesystem::exists(path))
       throw InputError("scene file '" + nameOrPath + "' does not exist");
-    if (ext == ".json") return loadSceneJson(path);
+    if (ext == ".json") return loadSceneJson(path, budget);
     if (ext == ".gltf" || ext == ".glb") return loadGltfScene(path);
     throw InputError("scene file '" + nameOrPath + "': unknown file type " +
                      (ext.empty() ? std::string("(no extension)") : ext) +

@@ -523,10 +523,10 @@ glm::vec3 RayTracer::tracePixel(const CameraRays& camera, uint32_t x, uint32_t y
   return sum / float(grid * grid);
 }
 
-void checkSamplesPerPixel(uint32_t samplesPerPixel) {
+void checkSamplesPerPixel(uint32_t samplesPerPixel, const std::string& name) {
   const uint32_t grid = uint32_t(std::lround(std::sqrt(double(samplesPerPixel))));
   if (samplesPerPixel == 0 || grid * grid != samplesPerPixel || grid > 16)
-    throw InputError("samples per pixel " + std::to_string(samplesPerPixel) +
+    throw InputError(name + " " + std::to_string(samplesPerPixel) +
                      ": expected a square number n*n from 1 to 256 (1, 4, 9, 16, ...)");
 }
 

@@ -130,6 +130,10 @@ class RayTracer {
   // than the rasterised mesh.
   // `scene` must outlive the tracer.
   explicit RayTracer(const Scene& scene, float tessellationScale = 4.0f);
+  // A temporary scene would not: `RayTracer tracer(makeScene())` kept a
+  // reference to a destroyed Scene (ASan: stack-use-after-scope when render
+  // read its camera). Refused at compile time.
+  explicit RayTracer(Scene&& scene, float tessellationScale = 4.0f) = delete;
   ~RayTracer();
   RayTracer(const RayTracer&) = delete;
   RayTracer& operator=(const RayTracer&) = delete;
@@ -169,8 +173,9 @@ class RayTracer {
   std::vector<TraceTexture> textures_;  // parallel to Scene::textures
 };
 
-// Throws InputError unless `samplesPerPixel` is a square n * n, 1..256.
-void checkSamplesPerPixel(uint32_t samplesPerPixel);
+// Throws InputError unless `samplesPerPixel` is a square n * n, 1..256; the
+// message begins with `name` (the command line passes its option, "--spp").
+void checkSamplesPerPixel(uint32_t samplesPerPixel, const std::string& name = "samples per pixel");
 
 // The colour of a ray that hits nothing: the environment's radiance along
 // it (core/scene/environment.h, the same orientation and intensity the cube map
