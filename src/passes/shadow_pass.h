@@ -3,7 +3,9 @@
 // layer of a depth array per light view (a directional light's one, a point
 // light's six cube faces: six passes, one per face).
 // Reads: the scene's vertex and index buffers (positions only); the draws
-// whose object casts shadows, culled against each view's frustum.
+// whose object casts shadows, culled against each view's frustum. Casters
+// with alphaMode MASK and a base colour texture also read their uv and their
+// material's set (ForwardPass's material layout) and cut the same holes.
 // Writes: its depth array, left in ShaderRead use for the forward pass
 // (BINDING_SHADOW_MAP, a compare sampler).
 #include <glm/glm.hpp>
@@ -19,17 +21,20 @@ class ShadowPass {
  public:
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-  explicit ShadowPass(const Context& context);
+  // `materialLayout`: the textured draws' set (ForwardPass::materialSetLayout).
+  ShadowPass(const Context& context, VkDescriptorSetLayout materialLayout);
   // A depth array of `layers` layers of size x size texels, kept while both
   // stay the same; returns true when the image changed (re-point the
   // descriptors that read it). Waits for the device before replacing it.
   bool prepare(uint32_t layers, uint32_t size);
   // Depth of every caster of `scene` into each layer, seen through
   // `worldToLightClip[layer]`; `objectTransforms` are the scene objects'
-  // model matrices. Returns the caster draws recorded (after culling).
+  // model matrices; `materialSets` the textured draws' sets by DrawItem::material.
+  // Returns the caster draws recorded (after culling).
   uint32_t record(VkCommandBuffer cmd, const GpuScene& scene,
                   std::span<const glm::mat4> objectTransforms,
-                  std::span<const glm::mat4> worldToLightClip);
+                  std::span<const glm::mat4> worldToLightClip,
+                  std::span<const VkDescriptorSet> materialSets);
 
   // The array (or a 1x1 placeholder before prepare) and its compare sampler.
   VkImageView view() const { return map_ ? map_.view() : placeholder_.view(); }
@@ -41,6 +46,9 @@ class ShadowPass {
   PipelineLayout layout_;
   ShaderModule vertex_;
   Pipeline pipeline_;
+  PipelineLayout maskedLayout_;  // set 0: a material's textures; push: ShadowDraw with its uv
+  ShaderModule maskedVertex_, maskedFragment_;
+  Pipeline maskedPipeline_;
   Sampler sampler_;
   Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
   Image map_;
