@@ -11,4 +11,6 @@ layout(constant_id = SPEC_POINT_LIGHTS) const int pointLightCount = 1;
 layout(constant_id = SPEC_DIRECTIONAL_LIGHTS) const int directionalLightCount = 0;
 // False when every point light has attenuation (1, 0, 0), so f_att = 1 needs no division.
 layout(constant_id = SPEC_ATTENUATED_POINT_LIGHTS) const bool pointLightsAttenuate = true;
+layout(constant_id = SPEC_ALPHA_MASK) const bool alphaMask = false;
+layout(constant_id = SPEC_DOUBLE_SIDED) const bool doubleSided = false;
 #endif

@@ -46,6 +46,9 @@ void main() {
   // Counter-clockwise winding seen from the front gives the outward normal.
   vec3 faceNormal = cross(p1 - p0, p2 - p0);
   vec3 center = (p0 + p1 + p2) / 3.0;
+  // doubleSided: a triangle facing away from the eye (V = -center, as the
+  // lighting takes it) is lit with the flipped normal.
+  if (doubleSided && dot(faceNormal, -center) < 0.0) faceNormal = -faceNormal;
 #ifdef SHADOW_VARYINGS
   vec3 terms[MAX_LIGHTS];
 #ifdef TEXTURED

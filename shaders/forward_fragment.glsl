@@ -77,7 +77,18 @@ layout(location = 0) out vec4 outColor;
 void main() {
 #ifdef TEXTURED
   vec2 st = textureCoordinate(inUv);
+  // The normal and height maps' coordinates (their own texture transform).
+  vec2 bumpSt = st;
+  if ((draw.object.w & MATERIAL_UV_TRANSFORM) != 0) {
+    bumpSt = transformedCoordinate(st, draw.normalUv, draw.optics.w);
+    st = transformedCoordinate(st, draw.diffuseUv, draw.texturing.w);
+  }
+  // alphaMode MASK: the texel's alpha against alphaCutoff / the factor's alpha.
+  if (alphaMask && (hasMap(TEXTURE_DIFFUSE) ? texture(diffuseMap, st).a : 1.0) < draw.ka.w)
+    discard;
   vec3 texel = diffuseTexel(st);
+#else
+  if (alphaMask && 1.0 < draw.ka.w) discard;
 #endif
 #if defined(FLAT_VARYINGS)
   vec3 color = LIT_EARLIER(inFlatColor, inFlatSpecular);
@@ -99,17 +110,21 @@ void main() {
     SurfaceMaterial material = drawMaterial();
     material.ka *= texel;
     material.kd *= texel;
-    normal = bumpedNormal(inNormal, inTangent, st);
+    normal = bumpedNormal(inNormal, inTangent, bumpSt);
+    // doubleSided: a back face is lit as the front seen from behind.
+    if (doubleSided && !gl_FrontFacing) normal = -normal;
     color = illuminate(inPosition, normal, material, shadingModel == SHADING_BLINN_PHONG);
   }
   EnvironmentDirections environment = environmentDirections(inPosition, normal, draw.optics.z);
 #else
+  vec3 normal = inNormal;
+  // doubleSided: a back face is lit as the front seen from behind.
+  if (doubleSided && !gl_FrontFacing) normal = -normal;
   vec3 color = shadingModel == SHADING_UNLIT
                    ? draw.kd.rgb
-                   : illuminate(inPosition, inNormal, drawMaterial(),
+                   : illuminate(inPosition, normal, drawMaterial(),
                                 shadingModel == SHADING_BLINN_PHONG);
-  EnvironmentDirections environment =
-      environmentDirections(inPosition, inNormal, draw.optics.z);
+  EnvironmentDirections environment = environmentDirections(inPosition, normal, draw.optics.z);
 #endif
 #ifdef SHADOW_VARYINGS
   // color holds the ambient part; each light's term enters weighed by its

@@ -56,6 +56,12 @@ void main() {
   vec4 eye = object.modelView * vec4(inPosition, 1.0);
   // Normals transform by the inverse transpose of the model-view matrix.
   vec3 normal = mat3(object.normalMatrix) * inNormal;
+#ifdef VERTEX_LIGHTING
+  // doubleSided: Gouraud lights only here, where the facing of the triangle is
+  // unknown; a normal facing away from the eye is flipped (per vertex, so a
+  // triangle across a silhouette may mix the two sides).
+  if (doubleSided && dot(normal, -eye.xyz) < 0.0) normal = -normal;
+#endif
 #ifdef TEXTURED
   outUv = inUv;
 #endif

@@ -50,6 +50,12 @@ using mat4 = glm::mat4;
 #define SPEC_SHADOW_FILTER 4  // SHADOW_*: how the shadow maps are filtered (off: not read)
 // Environment term in the forward pass (id 8: clear of the ids other features add).
 #define SPEC_ENVIRONMENT 8
+// glTF materials: alphaMode MASK (fragments below the cut-off discarded) and
+// doubleSided (back faces lit with the flipped normal). Constants, not flags,
+// so the pipelines of other materials keep no discard (which would turn off
+// early depth testing) and no extra branch.
+#define SPEC_ALPHA_MASK 9
+#define SPEC_DOUBLE_SIDED 10
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2
@@ -108,17 +114,26 @@ struct ObjectData {
 #define TEXTURE_NORMAL 2
 #define TEXTURE_HEIGHT 4
 #define TEXTURE_MIP_TINT 8  // debug: replace the diffuse texel by its mip level's colour
+// DrawConstants::object.w: the textures' KHR_texture_transform (diffuseUv,
+// normalUv and the rotations) applies; without it st is used as is.
+#define MATERIAL_UV_TRANSFORM 1
 
 // Per draw, as push constants: the material and the object's index. Fragment
 // shaders read the material from here, never from the storage buffer (on
 // llvmpipe that load cost 3 ms per 1280x720 frame, measured).
 struct DrawConstants {
-  vec4 ka;         // rgb
-  vec4 kd;         // rgb
-  vec4 ks;         // rgb, w = shininess n
-  ivec4 object;    // x = index into ObjectData[], y = TEXTURE_* flags, z = 1: receives shadows
-  vec4 texturing;  // xy = uv scale (repeats), z = bump scale
-  vec4 optics;     // environment term: x = reflectivity kr, y = transparency kt, z = ior
+  vec4 ka;  // rgb, w = alpha mask threshold: with SPEC_ALPHA_MASK, fragments whose diffuse texel
+            // alpha (1 without a texture) is below it are discarded (alphaCutoff / factor alpha)
+  vec4 kd;  // rgb
+  vec4 ks;  // rgb, w = shininess n
+  ivec4 object;    // x = index into ObjectData[], y = TEXTURE_* flags, z = 1: receives shadows,
+                   // w = MATERIAL_* flags
+  vec4 texturing;  // xy = uv scale (repeats), z = bump scale, w = diffuse map's uv rotation
+  vec4 optics;     // environment term: x = reflectivity kr, y = transparency kt, z = ior;
+                   // w = normal (and height) map's uv rotation
+  // KHR_texture_transform in the sampled (glTF) uv space: xy = offset, zw = scale.
+  vec4 diffuseUv;
+  vec4 normalUv;
 };
 
 // The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/scene/environment.cpp).

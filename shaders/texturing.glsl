@@ -5,6 +5,7 @@
 #ifndef TEXTURING_GLSL
 #define TEXTURING_GLSL
 #include "lighting.glsl"
+#include "uv_transform.glsl"
 
 layout(set = 1, binding = BINDING_DIFFUSE_MAP) uniform sampler2D diffuseMap;
 layout(set = 1, binding = BINDING_NORMAL_MAP) uniform sampler2D normalMap;

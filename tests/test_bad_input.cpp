@@ -460,6 +460,44 @@ const std::vector<BadCase>& badCases() {
        2,
        kError + "{data}/bad/missing_image.gltf: "},
       {Group::Gltf,
+       "negative alphaCutoff",
+       {},
+       render + "{data}/bad/alpha_cutoff_negative.gltf",
+       2,
+       kError + "{data}/bad/alpha_cutoff_negative.gltf: materials[0].alphaCutoff: expected a "
+                "number >= 0, got -0.5"},
+      {Group::Gltf,
+       "alphaCutoff not a number",
+       {},
+       render + "{data}/bad/alpha_cutoff_not_a_number.gltf",
+       2,
+       kError + "{data}/bad/alpha_cutoff_not_a_number.gltf: materials[0].alphaCutoff: expected "
+                "a number >= 0, got \"half\""},
+      {Group::Gltf,
+       "texture transform scale infinite as a float",
+       {},
+       render + "{data}/bad/texture_transform_infinite.gltf",
+       2,
+       kError + "{data}/bad/texture_transform_infinite.gltf: materials[0].pbrMetallicRoughness."
+                "baseColorTexture.extensions.KHR_texture_transform.scale[0]: expected a finite "
+                "number"},
+      {Group::Gltf,
+       "texture transform rotation not a number",
+       {},
+       render + "{data}/bad/texture_transform_not_a_number.gltf",
+       2,
+       kError + "{data}/bad/texture_transform_not_a_number.gltf: materials[0]."
+                "pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.rotation: "
+                "expected a finite number"},
+      // JSON cannot write an infinity; a number beyond a double is refused by the parser.
+      {Group::Gltf,
+       "texture transform offset beyond a double",
+       {},
+       render + "{data}/bad/texture_transform_1e999.gltf",
+       2,
+       kError + "{data}/bad/texture_transform_1e999.gltf: invalid glTF: "
+                "[json.exception.out_of_range.406] number overflow parsing '1e999'"},
+      {Group::Gltf,
        "required extension",
        {},
        render + "{data}/bad/required_extension.gltf",

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -133,6 +134,36 @@ TEST(GltfLoader, TexturesSamplersAndTheMaterialFormula) {
   }
 }
 
+// alphaMode MASK keeps the cut-off and the factor's alpha (not translucent);
+// doubleSided is kept per material; KHR_texture_transform per texture, and
+// its texCoord override picks the TEXCOORD set the vertices get.
+TEST(GltfLoader, AlphaMaskDoubleSidedAndTextureTransform) {
+  Scene masked = loadScene(data("alpha_mask.gltf").string());
+  ASSERT_EQ(masked.objects.size(), 2u);
+  EXPECT_EQ(masked.objects[0].material.alphaCutoff, 0.0f);  // OPAQUE: no test
+  EXPECT_FLOAT_EQ(masked.objects[1].material.alphaCutoff, 0.5f);
+  EXPECT_FLOAT_EQ(masked.objects[1].material.alpha, 1.0f);
+  EXPECT_EQ(masked.objects[1].material.transparency, 0.0f);
+  Scene sided = loadScene(data("double_sided.gltf").string());
+  ASSERT_EQ(sided.objects.size(), 2u);
+  EXPECT_TRUE(sided.objects[0].material.doubleSided);
+  EXPECT_FALSE(sided.objects[1].material.doubleSided);
+  Scene moved = loadScene(data("texture_transform.gltf").string());
+  ASSERT_EQ(moved.objects.size(), 3u);
+  EXPECT_FALSE(moved.objects[0].material.diffuseMap.transform.identity());
+  EXPECT_TRUE(moved.objects[0].material.normalMap.transform.identity());
+  // The middle quad's TEXCOORD_0 is all (0, 0); TEXCOORD_1 spans the texture.
+  const Mesh& middle = moved.meshes[moved.objects[1].mesh];
+  glm::vec2 low(1.0f), high(0.0f);
+  for (const Vertex& vertex : middle.vertices) {
+    low = glm::min(low, vertex.uv);
+    high = glm::max(high, vertex.uv);
+  }
+  EXPECT_EQ(low, glm::vec2(0.0f));
+  EXPECT_EQ(high, glm::vec2(1.0f));
+  EXPECT_TRUE(moved.objects[1].material.diffuseMap.present());
+}
+
 TEST(GltfLoader, MetalRoughnessAndEmissiveStrength) {
   // The hierarchy's triangles with a rough red metal that glows.
   std::ifstream in(data("hierarchy.gltf"));
@@ -250,10 +281,21 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"missing_image.gltf", "images[0] 'no_such_image.png'"},
         BadFile{"required_extension.gltf", "\"KHR_draco_mesh_compression\" is not supported"},
         BadFile{"zero_triangles.gltf", "meshes[0] primitives[0]: no triangles"},
-        BadFile{"index_out_of_range.gltf", "index 7 at position 2 is out of range"}),
+        BadFile{"index_out_of_range.gltf", "index 7 at position 2 is out of range"},
+        BadFile{"alpha_cutoff_negative.gltf",
+                "materials[0].alphaCutoff: expected a number >= 0, got -0.5"},
+        BadFile{"alpha_cutoff_not_a_number.gltf",
+                "materials[0].alphaCutoff: expected a number >= 0, got \"half\""},
+        BadFile{"texture_transform_infinite.gltf",
+                "KHR_texture_transform.scale[0]: expected a finite number"},
+        BadFile{"texture_transform_not_a_number.gltf",
+                "KHR_texture_transform.rotation: expected a finite number"},
+        BadFile{"texture_transform_1e999.gltf", "number overflow parsing '1e999'"}),
     [](const auto& info) {
       std::string name = info.param.file;
-      return name.substr(0, name.find('.'));
+      name = name.substr(0, name.find('.'));
+      std::replace(name.begin(), name.end(), '1', 'x');  // 1e999: gtest names are identifiers
+      return name;
     });
 
 // Every prefix of a valid GLB and of a valid .gltf is either a scene or an

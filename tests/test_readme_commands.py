@@ -3,7 +3,7 @@
 starts with `$B ` (the README sets B=build/release/shadelab), its trailing
 `# comment` stripped, runs through bash with B set to the binary under test,
 in README order, in a fresh temporary folder laid out as the README assumes
-of the repository root (assets/ and docs/ linked, out/ made, ../shared/assets
+of the repository root (assets/, docs/ and tests/ linked, out/ made, ../shared/assets
 linked to the real shared assets). Each must exit 0 and none may write into
 the repository (`git status --porcelain` in REPO_ROOT unchanged).
   test_readme_commands.py README SHADELAB_BINARY REPO_ROOT
@@ -112,7 +112,7 @@ def main(argv):
         # cwd is root/repo so that ../shared is root/shared, inside the folder.
         cwd = os.path.join(root, "repo")
         os.makedirs(os.path.join(cwd, "out"))
-        for name in ("assets", "docs"):
+        for name in ("assets", "docs", "tests"):
             os.symlink(os.path.join(repo, name), os.path.join(cwd, name))
         if shared_assets is not None:
             os.makedirs(os.path.join(root, "shared"))

@@ -13,6 +13,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/json_output.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/scene/scene_loader.h"
@@ -38,6 +39,7 @@ struct BenchCommandOptions {
   std::vector<int64_t> shadowSizes{kDefaultShadowMapSize};
   uint32_t frames = 60;
   uint32_t rounds = 2;
+  JsonOutput json;
 };
 
 // "material,nearest" -> {none, Nearest}; throws InputError naming a bad entry.
@@ -84,12 +86,12 @@ std::vector<uint32_t> checkShadowSizes(const std::vector<int64_t>& sizes) {
 // One line per setting: cost (with the multiple of the unlit floor), memory,
 // error; settings on the Pareto front are starred.
 void printResults(const std::vector<BenchResult>& results, const ErrorMetric& metric,
-                  size_t metricIndex) {
+                  size_t metricIndex, FILE* out) {
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, metricIndex), metricIndex, metric);
-  std::printf("%-12s %5s %5s %-9s %-10s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess", "msaa",
-              "filter", "shadows", "triangles", "median ms", "p95 ms", "x floor", "dev MB",
-              "rss MB", metric.name.c_str());
+  std::fprintf(out, "%-12s %5s %5s %-9s %-10s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess",
+               "msaa", "filter", "shadows", "triangles", "median ms", "p95 ms", "x floor", "dev MB",
+               "rss MB", metric.name.c_str());
   for (size_t i = 0; i < results.size(); ++i) {
     const BenchResult& r = results[i];
     const BenchResult* floor = nullptr;
@@ -101,18 +103,18 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
     char ratio[16] = "-";
     if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
     bool onFront = std::find(front.begin(), front.end(), i) != front.end();
-    std::printf("%-12s %5g %5u %-9s %-10s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
-                std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
-                r.point.msaaSamples, benchFilterName(r.point.filter).c_str(),
-                benchShadowName(r.point).c_str(), static_cast<unsigned long long>(r.triangles),
-                r.deviceMedianMs, r.deviceP95Ms, ratio, double(r.deviceMemoryBytes) / (1 << 20),
-                double(r.peakResidentBytes) / (1 << 20),
-                metricIndex < r.errors.size() ? r.errors[metricIndex] : 0.0, onFront ? " *" : "");
+    std::fprintf(out, "%-12s %5g %5u %-9s %-10s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
+                 std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
+                 r.point.msaaSamples, benchFilterName(r.point.filter).c_str(),
+                 benchShadowName(r.point).c_str(), static_cast<unsigned long long>(r.triangles),
+                 r.deviceMedianMs, r.deviceP95Ms, ratio, double(r.deviceMemoryBytes) / (1 << 20),
+                 double(r.peakResidentBytes) / (1 << 20),
+                 metricIndex < r.errors.size() ? r.errors[metricIndex] : 0.0, onFront ? " *" : "");
   }
-  std::printf(
-      "* on the Pareto front of device time against %s; dev MB: device memory "
-      "shadelab allocated, rss MB: process peak resident set (VmHWM)\n",
-      metric.name.c_str());
+  std::fprintf(out,
+               "* on the Pareto front of device time against %s; dev MB: device memory "
+               "shadelab allocated, rss MB: process peak resident set (VmHWM)\n",
+               metric.name.c_str());
 }
 
 int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
@@ -167,11 +169,33 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
                folder / "error_vs_triangles.png");
   });
   outputs.keep();
-  printResults(results, charted, chartedIndex);
-  std::printf(
-      "device medians over %zu steady frames per setting; wrote %s/{results.csv, "
-      "error_vs_time.png, error_vs_triangles.png}\n",
-      results.empty() ? size_t(0) : results.front().frames, folder.c_str());
+  FILE* out = options.json.human();
+  printResults(results, charted, chartedIndex, out);
+  std::fprintf(out,
+               "device medians over %zu steady frames per setting; wrote %s/{results.csv, "
+               "error_vs_time.png, error_vs_triangles.png}\n",
+               results.empty() ? size_t(0) : results.front().frames, folder.c_str());
+  nlohmann::json json = {{"scene", scene.name},
+                         {"settings",
+                          {{"width", size.width},
+                           {"height", size.height},
+                           {"frames", options.frames},
+                           {"rounds", options.rounds},
+                           {"reference", bench.reference.name},
+                           {"charted_metric", charted.name}}},
+                         {"results", nlohmann::json::array()},
+                         {"outputs",
+                          {{"csv", jsonPath(folder / "results.csv")},
+                           {"error_vs_time", jsonPath(folder / "error_vs_time.png")},
+                           {"error_vs_triangles", jsonPath(folder / "error_vs_triangles.png")}}}};
+  std::vector<size_t> front =
+      benchParetoFront(results, chartedResults(results, chartedIndex), chartedIndex, charted);
+  for (size_t i = 0; i < results.size(); ++i) {
+    nlohmann::json entry = toJson(results[i], bench.metrics);
+    entry["pareto"] = std::find(front.begin(), front.end(), i) != front.end();
+    json["results"].push_back(entry);
+  }
+  options.json.emit("bench", json);
   return finishWithValidation(*context, 0);
 }
 
@@ -234,6 +258,7 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--rounds", options->rounds, "Interleaved rounds over all settings")
       ->capture_default_str()
       ->check(CLI::Range(1u, 1000u));
+  options->json.add(command);
   return [options, &global] { return runBench(*options, global); };
 }
 

@@ -11,6 +11,7 @@
 #include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/json_output.h"
 #include "app/look_options.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -36,6 +37,7 @@ struct CompareOptions {
   uint32_t samplesPerPixel = 4;
   std::string referenceShadows = "on";
   ShadowOptions shadows;  // of the rasterised views
+  JsonOutput json;
 };
 
 // The heatmaps' key: the FLIP ramp from 0 (left) to 1 (right) in a band
@@ -75,13 +77,14 @@ SheetCell regionCell(const ReflectionRegions& regions, nlohmann::json& report) {
 }
 
 void splitByRegion(const MetricMap& flip, const ReflectionRegions& regions,
-                   std::vector<std::string>& lines, nlohmann::json& numbers) {
+                   std::vector<std::string>& lines, nlohmann::json& numbers, FILE* out) {
   const double hitting = meanOver(flip, regions, ReflectionRegion::HitsObject);
   const double escaping = meanOver(flip, regions, ReflectionRegion::Escapes);
   lines.push_back("FLIP hit " + fixed(hitting, 4) + "  escape " + fixed(escaping, 4));
   numbers["flipHitsObject"] = hitting;
   numbers["flipEscapes"] = escaping;
-  std::printf("   FLIP where the reflection hits an object %.4f, escapes %.4f", hitting, escaping);
+  std::fprintf(out, "   FLIP where the reflection hits an object %.4f, escapes %.4f", hitting,
+               escaping);
 }
 
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
@@ -109,14 +112,17 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   std::unique_ptr<Context> context = openContext(global);
   ImageU8 split, expected;
   double referenceSeconds = 0.0;
+  RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
+  RenderStats splitStats;
   {
     Renderer renderer(*context);
-    RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
     settings.splitModels = models;
     settings.shadows = shadowSettings.shadows;
     settings.shadowBias = shadowSettings.shadowBias;
     settings.shadowMapSize = shadowSettings.shadowMapSize;
-    split = encodeSrgb8(renderer.renderToImage(scene, settings).image);
+    RenderResult rendered = renderer.renderToImage(scene, settings);
+    split = encodeSrgb8(rendered.image);
+    splitStats = rendered.stats;
     const auto start = std::chrono::steady_clock::now();
     expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
     referenceSeconds =
@@ -136,9 +142,10 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   std::optional<ReflectionRegions> regions;
   if (scene.environment.present() && reference.name == "trace")
     regions = classifyReflections(scene, cell.width, cell.height);
-  std::printf("reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
-  std::printf("%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
-              "mean FLIP");
+  FILE* out = options.json.human();
+  std::fprintf(out, "reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
+  std::fprintf(out, "%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
+               "mean FLIP");
   // The split frame is exactly models.size() cells wide: every column is one cell.
   std::vector<ScreenColumn> columns = splitColumns(split.width, uint32_t(models.size()));
   for (size_t i = 0; i < models.size(); ++i) {
@@ -155,10 +162,10 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     nlohmann::json numbers = {
         {"mode", name}, {"rmse", difference.rmse}, {"psnr", difference.psnr},
         {"ssim", ssim}, {"flip", flip.mean},       {"maxDifference", difference.maxDifference}};
-    std::printf("%-12s %10.3f %10.2f %8d %8.4f %10.4f", name.c_str(), difference.rmse,
-                difference.psnr, difference.maxDifference, ssim, flip.mean);
-    if (regions) splitByRegion(flip, *regions, lines, numbers);
-    std::printf("\n");
+    std::fprintf(out, "%-12s %10.3f %10.2f %8d %8.4f %10.4f", name.c_str(), difference.rmse,
+                 difference.psnr, difference.maxDifference, ssim, flip.mean);
+    if (regions) splitByRegion(flip, *regions, lines, numbers, out);
+    std::fprintf(out, "\n");
     heatmaps.push_back({magmaHeatmap(flip), name + " vs reference", lines});
     report["modes"].push_back(numbers);
   }
@@ -168,7 +175,19 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   outputs.add(sheetPath, [&] { writeImage(composeSheet(sheet), sheetPath); });
   outputs.add(jsonPath, [&] { writeTextFile(jsonPath, report.dump(2) + "\n"); });
   outputs.keep();
-  std::printf("wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
+  std::fprintf(out, "wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
+  // The report written beside the sheet, with what only this run knows.
+  nlohmann::json json = report;
+  json["settings"] = toJson(settings);
+  json["settings"]["cell_width"] = cell.width;
+  json["settings"]["spp"] = options.samplesPerPixel;
+  json["timings"] = {{"reference_seconds", referenceSeconds},
+                     {"split_frame_device_ms", splitStats.deviceMs.front()}};
+  // The split frame draws the scene once per column.
+  json["triangles"] = splitStats.triangles;
+  json["outputs"] = {{"sheet", shadelab::jsonPath(sheetPath)},
+                     {"json", shadelab::jsonPath(jsonPath)}};
+  options.json.emit("compare", json);
   return finishWithValidation(*context, 0);
 }
 
@@ -203,6 +222,7 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
                              kOnOffNames))
       ->capture_default_str();
   options->shadows.add(command);
+  options->json.add(command);
   return [options, &global] { return runCompare(*options, global); };
 }
 

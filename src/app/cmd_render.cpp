@@ -9,6 +9,7 @@
 #include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/json_output.h"
 #include "app/look_options.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -40,6 +41,7 @@ struct RenderOptions {
   std::string metric = "flip";
   std::string reference = "trace";
   std::string benchFolder;  // cached bench results; empty: a quick sweep
+  JsonOutput json;
 };
 
 std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
@@ -56,22 +58,24 @@ std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, con
 // Prints every candidate, cheapest first, and why the chosen one won;
 // throws InputError when none meets the bound.
 BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const ErrorMetric& metric,
-                               double bound, const std::string& source) {
+                               double bound, const std::string& source, FILE* out) {
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const auto& a, const auto& b) { return a.costMs < b.costMs; });
   std::optional<size_t> chosen = cheapestMeeting(candidates, metric, bound);
   const char* relation = metric.lowerIsBetter ? "<=" : ">=";
-  std::printf("quality: %s %s %g, from %s\n", metric.name.c_str(), relation, bound, source.c_str());
-  std::printf("  %-30s %10s %10s %9s\n", "setting", "triangles", "device ms", metric.name.c_str());
+  std::fprintf(out, "quality: %s %s %g, from %s\n", metric.name.c_str(), relation, bound,
+               source.c_str());
+  std::fprintf(out, "  %-30s %10s %10s %9s\n", "setting", "triangles", "device ms",
+               metric.name.c_str());
   for (size_t i = 0; i < candidates.size(); ++i) {
     const QualityCandidate& c = candidates[i];
-    std::printf("  %-30s %10llu %10.3f %9.3f %s\n", benchPointName(c.point).c_str(),
-                static_cast<unsigned long long>(c.triangles), c.costMs, c.error,
-                chosen == i                    ? "<- chosen"
-                : metric.meets(c.error, bound) ? "meets"
-                                               : "");
+    std::fprintf(out, "  %-30s %10llu %10.3f %9.3f %s\n", benchPointName(c.point).c_str(),
+                 static_cast<unsigned long long>(c.triangles), c.costMs, c.error,
+                 chosen == i                    ? "<- chosen"
+                 : metric.meets(c.error, bound) ? "meets"
+                                                : "");
   }
-  std::fflush(stdout);  // the table before any error message on stderr
+  std::fflush(out);  // the table before any error message on stderr
   if (!chosen) {
     size_t best = 0;
     for (size_t i = 1; i < candidates.size(); ++i)
@@ -85,41 +89,36 @@ BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const E
     throw InputError(message);
   }
   const QualityCandidate& c = candidates[*chosen];
-  std::printf("chose %s: the cheapest setting with %s %s %g (%.3f ms device median, %s %.3f)\n",
-              benchPointName(c.point).c_str(), metric.name.c_str(), relation, bound, c.costMs,
-              metric.name.c_str(), c.error);
+  std::fprintf(out,
+               "chose %s: the cheapest setting with %s %s %g (%.3f ms device median, %s %.3f)\n",
+               benchPointName(c.point).c_str(), metric.name.c_str(), relation, bound, c.costMs,
+               metric.name.c_str(), c.error);
   // Costs within a tenth of each other are within this machine's timing
   // noise: say so, since another run may rank them the other way.
   for (size_t i = 0; i < candidates.size(); ++i)
     if (i != *chosen && metric.meets(candidates[i].error, bound) &&
         candidates[i].costMs <= c.costMs * 1.1)
-      std::printf(
-          "note: %s costs within 10%% (%.3f ms), inside timing noise; pass --bench DIR "
-          "to choose from fixed measurements\n",
-          benchPointName(candidates[i].point).c_str(), candidates[i].costMs);
+      std::fprintf(out,
+                   "note: %s costs within 10%% (%.3f ms), inside timing noise; pass --bench DIR "
+                   "to choose from fixed measurements\n",
+                   benchPointName(candidates[i].point).c_str(), candidates[i].costMs);
   return c.point;
 }
 
-void printTimings(const RenderStats& stats) {
-  // The first frames include lavapipe's lazy pipeline compile: report them
-  // apart and take the steady statistics over the rest.
-  size_t warmup = warmupFrames(stats.deviceMs.size());
-  std::vector<double> device(stats.deviceMs.begin() + long(warmup), stats.deviceMs.end());
-  std::vector<double> wall(stats.wallMs.begin() + long(warmup), stats.wallMs.end());
-  std::printf("first frame: %.2f ms wall, %.2f ms device\n", stats.wallMs.front(),
-              stats.deviceMs.front());
-  std::printf(
-      "steady (%zu frames after %zu warm-up): device median %.3f ms, p95 %.3f ms; "
-      "wall median %.3f ms, mean %.3f ms, p95 %.3f ms\n",
-      device.size(), warmup, median(device), percentile(device, 95.0), median(wall), mean(wall),
-      percentile(wall, 95.0));
-  std::vector<double> shadow(stats.shadowMs.begin() + long(warmup), stats.shadowMs.end());
-  if (median(shadow) > 0.0)
-    std::printf(
-        "shadow maps: device median %.3f ms of the frame (%u caster draws in the last "
-        "frame%s)\n",
-        median(shadow), stats.shadowDraws,
-        stats.shadowDraws == 0 ? "; its maps were kept from an earlier frame" : "");
+void printTimings(const FrameTimings& timings, uint32_t shadowDraws, FILE* out) {
+  std::fprintf(out, "first frame: %.2f ms wall, %.2f ms device\n", timings.firstWallMs,
+               timings.firstDeviceMs);
+  std::fprintf(out,
+               "steady (%zu frames after %zu warm-up): device median %.3f ms, p95 %.3f ms; "
+               "wall median %.3f ms, mean %.3f ms, p95 %.3f ms\n",
+               timings.steadyFrames, timings.warmup, timings.deviceMedianMs, timings.deviceP95Ms,
+               timings.wallMedianMs, timings.wallMeanMs, timings.wallP95Ms);
+  if (timings.shadowMedianMs > 0.0)
+    std::fprintf(out,
+                 "shadow maps: device median %.3f ms of the frame (%u caster draws in the last "
+                 "frame%s)\n",
+                 timings.shadowMedianMs, shadowDraws,
+                 shadowDraws == 0 ? "; its maps were kept from an earlier frame" : "");
 }
 
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
@@ -134,6 +133,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   if (options.quality) checkMetricBound(metric, *options.quality, "--quality");
   const Reference& reference = findReference(options.reference, "--reference");
   checkOutputPath(options.output);  // fail before the expensive work
+  FILE* out = options.json.human();
   Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
   ViewSize view{scene.camera, size.width, size.height};
@@ -146,9 +146,9 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   printSceneWarnings(scene, true);
   if (options.simplify > 0.0f) {
     SimplifyStats simplified = simplifyForView(scene, view, options.simplify);
-    std::printf("simplified loaded meshes to %g px: %llu -> %llu triangles\n", options.simplify,
-                static_cast<unsigned long long>(simplified.trianglesBefore),
-                static_cast<unsigned long long>(simplified.trianglesAfter));
+    std::fprintf(out, "simplified loaded meshes to %g px: %llu -> %llu triangles\n",
+                 options.simplify, static_cast<unsigned long long>(simplified.trianglesBefore),
+                 static_cast<unsigned long long>(simplified.trianglesAfter));
   }
   std::vector<QualityCandidate> cached;
   if (options.quality && !options.benchFolder.empty())
@@ -156,6 +156,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
 
   std::unique_ptr<Context> context = openContext(global);
   RenderResult result;
+  RenderSettings settings{size.width, size.height};
   {
     Renderer renderer(*context);
     if (options.quality) {
@@ -170,10 +171,11 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
       point =
           reportQualityChoice(cached, metric, *options.quality,
                               quick ? "a quick sweep against the " + reference.name + " reference"
-                                    : options.benchFolder + "/results.csv");
+                                    : options.benchFolder + "/results.csv",
+                              out);
     }
     if (point.tessellation != 1.0f) scene.retessellate(point.tessellation);
-    RenderSettings settings{size.width, size.height, point.model};
+    settings.shadingModel = point.model;
     settings.frames = options.frames;
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
@@ -187,12 +189,28 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     result = renderer.renderToImage(scene, settings);
   }
   writeImage(result.image, options.output);
-  std::printf("wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled)\n",
-              options.output.c_str(), size.width, size.height, scene.name.c_str(),
-              std::string(shadingModelName(point.model)).c_str(),
-              static_cast<unsigned long long>(result.stats.triangles), result.stats.drawCalls,
-              result.stats.culledDraws);
-  if (options.frames > 1) printTimings(result.stats);
+  std::fprintf(out, "wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled)\n",
+               options.output.c_str(), size.width, size.height, scene.name.c_str(),
+               std::string(shadingModelName(point.model)).c_str(),
+               static_cast<unsigned long long>(result.stats.triangles), result.stats.drawCalls,
+               result.stats.culledDraws);
+  FrameTimings timings = frameTimings(result.stats);
+  if (options.frames > 1) printTimings(timings, result.stats.shadowDraws, out);
+  nlohmann::json json = {{"scene", scene.name},
+                         {"settings", toJson(settings)},
+                         {"timings", toJson(timings)},
+                         {"triangles", result.stats.triangles},
+                         {"draw_calls", result.stats.drawCalls},
+                         {"culled_draws", result.stats.culledDraws},
+                         {"device_memory_bytes", result.stats.deviceMemoryBytes},
+                         {"outputs", {{"image", jsonPath(options.output)}}}};
+  json["settings"]["frames"] = settings.frames;
+  json["settings"]["tess"] =
+      autoTessellation ? nlohmann::json("auto") : nlohmann::json(point.tessellation);
+  if (options.quality)
+    json["quality"] = {
+        {"metric", metric.name}, {"bound", *options.quality}, {"chosen", toJson(point)}};
+  options.json.emit("render", json);
   return finishWithValidation(*context, 0);
 }
 
@@ -240,6 +258,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));
   addLookOptions(command, options->look);
+  options->json.add(command);
   command
       ->add_option(
           "--depth", options->depth,

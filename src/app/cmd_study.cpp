@@ -1,12 +1,16 @@
 // shadelab study [NAME] -o DIR: runs one study of the registry
 // (measure/study.h) into DIR and prints its table; without NAME, lists them.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/json_output.h"
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "measure/study.h"
 
 namespace shadelab {
@@ -16,18 +20,54 @@ struct StudyCommandOptions {
   std::string name;
   std::string output;
   std::string size;  // empty: the study's default
+  JsonOutput json;
 };
 
-int listStudies() {
-  std::printf("studies (shadelab study NAME -o DIR):\n");
-  for (const Study& study : studies())
-    std::printf("  %-18s %s\n", std::string(study.name).c_str(),
-                std::string(study.summary).c_str());
+int listStudies(const JsonOutput& json) {
+  FILE* out = json.human();
+  std::fprintf(out, "studies (shadelab study NAME -o DIR):\n");
+  nlohmann::json list = nlohmann::json::array();
+  for (const Study& study : studies()) {
+    std::fprintf(out, "  %-18s %s\n", std::string(study.name).c_str(),
+                 std::string(study.summary).c_str());
+    list.push_back({{"name", std::string(study.name)}, {"summary", std::string(study.summary)}});
+  }
+  json.emit("study", {{"studies", list}});
   return 0;
 }
 
+// A study's CSV (its measurements, one row per line, a header, no quoted
+// fields) as rows of objects keyed by the header: numbers as numbers.
+nlohmann::json csvRows(const std::filesystem::path& path) {
+  auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    std::string cell;
+    while (std::getline(stream, cell, ',')) cells.push_back(cell);
+    return cells;
+  };
+  std::stringstream text(readInputFile(path, "study output", kMaxTextInputBytes));
+  std::string line;
+  std::getline(text, line);
+  std::vector<std::string> header = split(line);
+  nlohmann::json rows = nlohmann::json::array();
+  while (std::getline(text, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> cells = split(line);
+    nlohmann::json row = nlohmann::json::object();
+    for (size_t i = 0; i < header.size() && i < cells.size(); ++i) {
+      char* end = nullptr;
+      double number = std::strtod(cells[i].c_str(), &end);
+      bool numeric = !cells[i].empty() && end == cells[i].c_str() + cells[i].size();
+      row[header[i]] = numeric ? nlohmann::json(number) : nlohmann::json(cells[i]);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 int runStudy(const StudyCommandOptions& options, const GlobalOptions& global) {
-  if (options.name.empty()) return listStudies();
+  if (options.name.empty()) return listStudies(options.json);
   const Study& study = findStudy(options.name);
   if (options.output.empty()) throw InputError("study " + options.name + ": -o DIR is required");
   StudyOptions run{options.output, study.defaultWidth, study.defaultHeight};
@@ -55,6 +95,7 @@ int runStudy(const StudyCommandOptions& options, const GlobalOptions& global) {
   std::fprintf(stderr, "study %s at %ux%u: %s\n", options.name.c_str(), run.width, run.height,
                std::string(study.summary).c_str());
   StudyResult result;
+  const auto start = std::chrono::steady_clock::now();
   try {
     result = study.run(run, services);
   } catch (...) {
@@ -65,10 +106,29 @@ int runStudy(const StudyCommandOptions& options, const GlobalOptions& global) {
     throw;
   }
   renderer.reset();
-  std::printf("%s", result.report.c_str());
-  std::printf("wrote into %s:", run.output.c_str());
-  for (const std::string& file : result.files) std::printf(" %s", file.c_str());
-  std::printf("\n");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  FILE* out = options.json.human();
+  std::fprintf(out, "%s", result.report.c_str());
+  std::fprintf(out, "wrote into %s:", run.output.c_str());
+  for (const std::string& file : result.files) std::fprintf(out, " %s", file.c_str());
+  std::fprintf(out, "\n");
+  if (options.json.enabled()) {
+    nlohmann::json json = {{"study", std::string(study.name)},
+                           {"settings", {{"width", run.width}, {"height", run.height}}},
+                           {"timings", {{"wall_seconds", seconds}}},
+                           {"report", nlohmann::json::array()},
+                           {"tables", nlohmann::json::object()},
+                           {"outputs", {{"folder", jsonPath(run.output)}, {"files", {}}}}};
+    std::stringstream report(result.report);
+    for (std::string line; std::getline(report, line);) json["report"].push_back(line);
+    for (const std::string& file : result.files) {
+      json["outputs"]["files"].push_back(jsonPath(run.output / file));
+      if (std::filesystem::path(file).extension() == ".csv")
+        json["tables"][file] = csvRows(run.output / file);
+    }
+    options.json.emit("study", json);
+  }
   return context ? finishWithValidation(*context, 0) : 0;
 }
 
@@ -87,6 +147,7 @@ CommandRunner addStudyCommand(CLI::App& app, const GlobalOptions& global) {
                       "Folder for the study's images, CSV and chart (created if needed)");
   command->add_option("--size", options->size,
                       "Image size WIDTHxHEIGHT (default: the study's own, e.g. 640x360)");
+  options->json.add(command);
   return [options, &global] { return runStudy(*options, global); };
 }
 

@@ -10,6 +10,7 @@
 #include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/json_output.h"
 #include "core/base/errors.h"
 #include "core/base/image.h"
 #include "core/scene/scene_loader.h"
@@ -29,6 +30,7 @@ struct TraceOptions {
   std::string shadows = "on";
   std::string fresnel = "on";
   std::string epsilon;  // empty: TraceSettings' default
+  JsonOutput json;
 };
 
 // --epsilon: a finite number of world units from 0 to 1; throws InputError.
@@ -82,17 +84,43 @@ int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   const double buildSeconds = std::chrono::duration<double>(built - start).count();
   const double traceSeconds = std::chrono::duration<double>(done - built).count();
   const TraceStats& stats = result.stats;
-  std::printf("wrote %s (%ux%u, scene %s, %u spp, %u bounces)\n", options.output.c_str(),
-              size.width, size.height, scene.name.c_str(), settings.samplesPerPixel,
-              settings.maxDepth);
-  std::printf(
-      "trace: %.3f s (+ %.3f s BVH build), %.2f Mrays/s: %llu primary, %llu shadow, "
-      "%llu reflected/refracted (%llu total internal reflections)\n",
-      traceSeconds, buildSeconds, double(stats.total()) / traceSeconds * 1e-6,
-      static_cast<unsigned long long>(stats.primaryRays),
-      static_cast<unsigned long long>(stats.shadowRays),
-      static_cast<unsigned long long>(stats.secondaryRays),
-      static_cast<unsigned long long>(stats.totalInternalReflections));
+  FILE* out = options.json.human();
+  std::fprintf(out, "wrote %s (%ux%u, scene %s, %u spp, %u bounces)\n", options.output.c_str(),
+               size.width, size.height, scene.name.c_str(), settings.samplesPerPixel,
+               settings.maxDepth);
+  const double raysPerSecond = double(stats.total()) / traceSeconds;
+  std::fprintf(out,
+               "trace: %.3f s (+ %.3f s BVH build), %.2f Mrays/s: %llu primary, %llu shadow, "
+               "%llu reflected/refracted (%llu total internal reflections)\n",
+               traceSeconds, buildSeconds, raysPerSecond * 1e-6,
+               static_cast<unsigned long long>(stats.primaryRays),
+               static_cast<unsigned long long>(stats.shadowRays),
+               static_cast<unsigned long long>(stats.secondaryRays),
+               static_cast<unsigned long long>(stats.totalInternalReflections));
+  options.json.emit("trace",
+                    {{"scene", scene.name},
+                     {"settings",
+                      {{"width", size.width},
+                       {"height", size.height},
+                       {"spp", settings.samplesPerPixel},
+                       {"bounces", settings.maxDepth},
+                       {"shadows", settings.shadows},
+                       {"fresnel", settings.fresnel},
+                       {"epsilon", settings.epsilon},
+                       {"threads", settings.threads}}},
+                     {"timings",
+                      {{"trace_seconds", traceSeconds},
+                       {"bvh_build_seconds", buildSeconds},
+                       {"rays_per_second", raysPerSecond}}},
+                     // The scene's meshes, all objects (the tracer culls nothing; it intersects
+                     // spheres, planes and boxes exactly, their meshes stand for the rasteriser's).
+                     {"triangles", scene.triangleCount()},
+                     {"rays",
+                      {{"primary", stats.primaryRays},
+                       {"shadow", stats.shadowRays},
+                       {"secondary", stats.secondaryRays},
+                       {"total_internal_reflections", stats.totalInternalReflections}}},
+                     {"outputs", {{"image", jsonPath(options.output)}}}});
   return 0;
 }
 
@@ -107,6 +135,7 @@ CommandRunner addTraceCommand(CLI::App& app, const GlobalOptions& global) {
   addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Output image (.png sRGB, .exr linear)")
       ->required();
+  options->json.add(command);
   command->add_option("--size", options->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   command
       ->add_option("--spp", options->samplesPerPixel,

@@ -1,6 +1,7 @@
 #include "passes/forward_pass.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cstddef>
 #include <optional>
@@ -123,20 +124,25 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
 }
 
 void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
-                          bool environment, ShadowMethod shadows) {
+                          bool environment, ShadowMethod shadows, bool masked, bool doubleSided) {
   for (int model = 0; model < kShadingModelCount; ++model)
     for (bool texturedVariant : {false, true})
-      for (bool blendedVariant : {false, true}) {
-        ForwardVariant key{.model = ShadingModel(model),
-                           .lights = lights,
-                           .target = target,
-                           .textured = texturedVariant,
-                           .blended = blendedVariant,
-                           .environment = environment,
-                           .shadows = shadows};
-        bool needed = (!texturedVariant || textured) && (!blendedVariant || blended);
-        if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-      }
+      for (bool blendedVariant : {false, true})
+        for (bool maskedVariant : {false, true})
+          for (bool doubleSidedVariant : {false, true}) {
+            ForwardVariant key{.model = ShadingModel(model),
+                               .lights = lights,
+                               .target = target,
+                               .textured = texturedVariant,
+                               .blended = blendedVariant,
+                               .environment = environment,
+                               .shadows = shadows,
+                               .masked = maskedVariant,
+                               .doubleSided = doubleSidedVariant};
+            bool needed = (!texturedVariant || textured) && (!blendedVariant || blended) &&
+                          (!maskedVariant || masked) && (!doubleSidedVariant || doubleSided);
+            if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+          }
   ForwardVariant wireframe{
       .model = ShadingModel::Unlit, .lights = lights, .target = target, .wireframe = true};
   if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
@@ -144,7 +150,8 @@ void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured
 }
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
-  const auto& [model, lights, target, textured, blended, wireframe, environment, shadows] = key;
+  const auto& [model, lights, target, textured, blended, wireframe, environment, shadows, masked,
+               doubleSided] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -152,12 +159,16 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
     VkBool32 attenuated;
     VkBool32 environment;
     int32_t shadowFilter;
+    VkBool32 alphaMask;
+    VkBool32 doubleSided;
   } constants{int32_t(model),
               int32_t(lights.point),
               int32_t(lights.directional),
               lights.attenuated ? VK_TRUE : VK_FALSE,
               environment ? VK_TRUE : VK_FALSE,
-              int32_t(shadows)};
+              int32_t(shadows),
+              masked ? VK_TRUE : VK_FALSE,
+              doubleSided ? VK_TRUE : VK_FALSE};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -167,6 +178,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
        4},
       {/* constantID= */ SPEC_ENVIRONMENT, offsetof(decltype(constants), environment), 4},
       {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(decltype(constants), shadowFilter), 4},
+      {/* constantID= */ SPEC_ALPHA_MASK, offsetof(decltype(constants), alphaMask), 4},
+      {/* constantID= */ SPEC_DOUBLE_SIDED, offsetof(decltype(constants), doubleSided), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};
@@ -220,7 +233,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   raster.depthBiasEnable = wireframe ? VK_TRUE : VK_FALSE;
   raster.depthBiasConstantFactor = towardsEye;
   raster.depthBiasSlopeFactor = towardsEye;
-  raster.cullMode = VK_CULL_MODE_BACK_BIT;
+  // Back faces culled, unless the material is double-sided (glTF doubleSided).
+  raster.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
   // The projection flips y for Vulkan; Vulkan's signed-area rule flips it back,
   // so triangles counter-clockwise in the course's y-up view stay front-facing.
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
@@ -283,10 +297,11 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardF
                          const GpuScene& scene, std::span<const DrawItem> draws,
                          const VkViewport& viewport) const {
   bindFrame(cmd, frame, scene, viewport);
-  std::optional<std::pair<bool, bool>> bound;  // (textured, blended) of the bound pipeline
+  // (textured, blended, masked, double-sided) of the bound pipeline
+  std::optional<std::array<bool, 4>> bound;
   VkDescriptorSet materialSet = VK_NULL_HANDLE;
   for (const DrawItem& draw : draws) {
-    std::pair<bool, bool> variant{draw.textured, draw.transparent};
+    std::array<bool, 4> variant{draw.textured, draw.transparent, draw.masked, draw.doubleSided};
     if (bound != variant) {
       auto pipeline = pipelines_.find({.model = model,
                                        .lights = scene.lights,
@@ -294,7 +309,9 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardF
                                        .textured = draw.textured,
                                        .blended = draw.transparent,
                                        .environment = frame.environment,
-                                       .shadows = frame.shadows});
+                                       .shadows = frame.shadows,
+                                       .masked = draw.masked,
+                                       .doubleSided = draw.doubleSided});
       assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
       bound = variant;

@@ -43,7 +43,9 @@ struct ForwardVariant {
   bool wireframe = false;    // polygonMode LINE, depth-biased towards the eye
   bool environment = false;  // SPEC_ENVIRONMENT: reflection and refraction of the cube
   ShadowMethod shadows =
-      ShadowMethod::Off;  // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
+      ShadowMethod::Off;     // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
+  bool masked = false;       // SPEC_ALPHA_MASK: glTF alphaMode MASK
+  bool doubleSided = false;  // SPEC_DOUBLE_SIDED, no culling: glTF doubleSided
   auto operator<=>(const ForwardVariant&) const = default;
 };
 
@@ -70,9 +72,11 @@ class ForwardPass {
   // (specialization constants) and a target layout, before any frame records
   // with them; `textured` adds the textured variants, `blended` the ones
   // transparent draws use; `environment` selects the variants with the
-  // environment term.
+  // environment term; `masked` and `doubleSided` add those of glTF materials
+  // with alphaMode MASK and doubleSided.
   void prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
-               bool environment = false, ShadowMethod shadows = ShadowMethod::Off);
+               bool environment = false, ShadowMethod shadows = ShadowMethod::Off,
+               bool masked = false, bool doubleSided = false);
   // Records `draws` (visibleDraws: opaque first, then transparent ones, which
   // blend over what is drawn) inside an active dynamic-rendering scope; sets
   // its own viewport.

@@ -37,7 +37,7 @@ Renderer::Renderer(const Context& context)
       forward_(context, kColorFormat),
       textures_(context, forward_.materialSetLayout()),
       skybox_(context, kColorFormat, forward_.descriptorSetLayout()),
-      shadow_(context),
+      shadow_(context, forward_.materialSetLayout()),
       environmentBuilder_(context),
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kFramesInFlight},
@@ -305,7 +305,7 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   // No map to draw: the variants without shadows (the images of before them).
   ShadowMethod shadows = scene.shadowLayers > 0 ? settings.shadows : ShadowMethod::Off;
   forward_.prepare(scene.lights, layout, scene.anyTextured, scene.anyTransparent, environment,
-                   shadows);
+                   shadows, scene.anyMasked, scene.anyDoubleSided);
   if (shadows != ShadowMethod::Off && shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
     context_.waitIdle();  // no frame in flight may hold the descriptors being re-pointed
     for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
@@ -405,6 +405,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& 
   transforms.reserve(source.objects.size());
   for (const Object& object : source.objects) transforms.push_back(object.transform);
   stats.shadowDraws = shadow_.record(cmd, scene, uploadCount_, transforms, shadows.worldToLightClip,
+                                     textures_.materialSets(settings_.textures.filterOverride),
                                      settings_.keepShadowMaps);
 }
 

@@ -1,5 +1,7 @@
 #include "passes/shadow_pass.h"
 
+#include <bit>
+#include <cassert>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/scene/frustum.h"
@@ -10,7 +12,22 @@
 
 namespace shadelab {
 
-ShadowPass::ShadowPass(const Context& context) : context_(context) {
+namespace {
+// shadow_depth_masked.*'s push constants.
+struct MaskedShadowDraw {
+  glm::mat4 objectToLightClip;
+  glm::vec4 texturing;  // xy = uv scale, z = alpha threshold, w = uv rotation
+  glm::vec4 diffuseUv;  // KHR_texture_transform: xy = offset, zw = scale
+};
+
+// A caster whose base colour texture's alpha cuts holes in its shadow.
+bool isMaskedCaster(const DrawItem& draw) {
+  return draw.masked && draw.textured && (draw.constants.object.y & TEXTURE_DIFFUSE);
+}
+}  // namespace
+
+ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLayout)
+    : context_(context) {
   VkDevice device = context.device();
   VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4)};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -61,6 +78,37 @@ ShadowPass::ShadowPass(const Context& context) : context_(context) {
                                               VK_FORMAT_UNDEFINED,
                                               kDepthFormat,
                                               layout_});
+
+  // alphaMode MASK casters: the same state with the uv and a fragment stage.
+  VkPushConstantRange maskedPush{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                                 sizeof(MaskedShadowDraw)};
+  VkPipelineLayoutCreateInfo maskedLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  maskedLayoutInfo.setLayoutCount = 1;
+  maskedLayoutInfo.pSetLayouts = &materialLayout;
+  maskedLayoutInfo.pushConstantRangeCount = 1;
+  maskedLayoutInfo.pPushConstantRanges = &maskedPush;
+  VK_CHECK(vkCreatePipelineLayout(device, &maskedLayoutInfo, nullptr, &layout));
+  maskedLayout_ = PipelineLayout(device, layout);
+  maskedVertex_ = loadShader(device, "shadow_depth_masked.vert");
+  maskedFragment_ = loadShader(device, "shadow_depth_masked.frag");
+  VkPipelineShaderStageCreateInfo maskedStages[2] = {stage, stage};
+  maskedStages[0].module = maskedVertex_;
+  maskedStages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  maskedStages[1].module = maskedFragment_;
+  VkVertexInputAttributeDescription maskedAttributes[] = {
+      position, {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+  VkPipelineVertexInputStateCreateInfo maskedInput = vertexInput;
+  maskedInput.vertexAttributeDescriptionCount = 2;
+  maskedInput.pVertexAttributeDescriptions = maskedAttributes;
+  maskedPipeline_ = createGraphicsPipeline(device, {{maskedStages, 2},
+                                                    &maskedInput,
+                                                    &raster,
+                                                    &multisample,
+                                                    &depth,
+                                                    {},
+                                                    VK_FORMAT_UNDEFINED,
+                                                    kDepthFormat,
+                                                    maskedLayout_});
 
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   // One tap per texture() call: the filters are taps in the shader (PCF).
@@ -121,7 +169,8 @@ bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
 
 uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
                             std::span<const glm::mat4> objectTransforms,
-                            std::span<const glm::mat4> worldToLightClip, bool keep) {
+                            std::span<const glm::mat4> worldToLightClip,
+                            std::span<const VkDescriptorSet> materialSets, bool keep) {
   assert(map_ && worldToLightClip.size() <= layerViews_.size());
   if (sceneUpload != drawnUpload_) {
     drawnFrom_.assign(drawnFrom_.size(), {});
@@ -133,14 +182,24 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t
   std::vector<size_t> toDraw;
   for (size_t layer = 0; layer < worldToLightClip.size(); ++layer) {
     Frustum frustum = frustumFromMatrix(worldToLightClip[layer]);
-    std::vector<float> from(glm::value_ptr(worldToLightClip[layer]),
-                            glm::value_ptr(worldToLightClip[layer]) + 16);
+    std::vector<uint32_t> from;
+    auto add = [&](const glm::mat4& matrix) {
+      for (int i = 0; i < 16; ++i)
+        from.push_back(std::bit_cast<uint32_t>(glm::value_ptr(matrix)[i]));
+    };
+    add(worldToLightClip[layer]);
     for (const DrawItem& draw : scene.draws) {
-      if (!draw.castsShadows || !boxIntersectsFrustum(draw.worldBounds, frustum)) continue;
+      if (!draw.castsShadows || draw.hidden || !boxIntersectsFrustum(draw.worldBounds, frustum))
+        continue;
       casters[layer].push_back(&draw);
-      const glm::mat4& model = objectTransforms[size_t(draw.constants.object.x)];
-      from.push_back(float(&draw - scene.draws.data()));
-      from.insert(from.end(), glm::value_ptr(model), glm::value_ptr(model) + 16);
+      from.push_back(uint32_t(&draw - scene.draws.data()));
+      add(objectTransforms[size_t(draw.constants.object.x)]);
+      // A masked caster's holes depend on its texture's sampler (the filter override).
+      if (isMaskedCaster(draw)) {
+        uint64_t set = uint64_t(materialSets[draw.material]);
+        from.push_back(uint32_t(set));
+        from.push_back(uint32_t(set >> 32));
+      }
     }
     if (keep && from == drawnFrom_[layer]) continue;
     drawnFrom_[layer] = std::move(from);
@@ -177,12 +236,35 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t
     VkBuffer vertexBuffer = scene.vertices.get();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
-    for (const DrawItem* draw : casters[layer]) {
+    bool maskedBound = false;
+    for (const DrawItem* caster : casters[layer]) {
+      const DrawItem& draw = *caster;
       glm::mat4 objectToClip =
-          worldToLightClip[layer] * objectTransforms[size_t(draw->constants.object.x)];
-      vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(objectToClip),
-                         &objectToClip);
-      vkCmdDrawIndexed(cmd, draw->indexCount, 1, draw->firstIndex, draw->vertexOffset, 0);
+          worldToLightClip[layer] * objectTransforms[size_t(draw.constants.object.x)];
+      bool masked = isMaskedCaster(draw);
+      if (masked != maskedBound) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                          masked ? maskedPipeline_.get() : pipeline_.get());
+        maskedBound = masked;
+      }
+      if (masked) {
+        assert(draw.material < materialSets.size() && "masked caster without its material set");
+        VkDescriptorSet set = materialSets[draw.material];
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedLayout_, 0, 1, &set, 0,
+                                nullptr);
+        const gpu::DrawConstants& constants = draw.constants;
+        MaskedShadowDraw push{objectToClip,
+                              glm::vec4(constants.texturing.x, constants.texturing.y,
+                                        constants.ka.w, constants.texturing.w),
+                              constants.diffuseUv};
+        vkCmdPushConstants(cmd, maskedLayout_,
+                           VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                           sizeof(push), &push);
+      } else {
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(objectToClip),
+                           &objectToClip);
+      }
+      vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
       ++drawn;
     }
     vkCmdEndRendering(cmd);

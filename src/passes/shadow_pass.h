@@ -3,7 +3,9 @@
 // layer of a depth array per light view (a directional light's one, a point
 // light's six cube faces: six passes, one per face).
 // Reads: the scene's vertex and index buffers (positions only); the draws
-// whose object casts shadows, culled against each view's frustum.
+// whose object casts shadows, culled against each view's frustum. Casters
+// with alphaMode MASK and a base colour texture also read their uv and their
+// material's set (ForwardPass's material layout) and cut the same holes.
 // Writes: its depth array, left in ShaderRead use for the forward pass
 // (BINDING_SHADOW_MAP, a compare sampler).
 // Keeps: a layer whose view and casters (their transforms, after culling)
@@ -25,19 +27,23 @@ class ShadowPass {
  public:
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-  explicit ShadowPass(const Context& context);
+  // `materialLayout`: the textured draws' set (ForwardPass::materialSetLayout).
+  ShadowPass(const Context& context, VkDescriptorSetLayout materialLayout);
   // A depth array of `layers` layers of size x size texels, kept while both
   // stay the same; returns true when the image changed (re-point the
   // descriptors that read it). Waits for the device before replacing it.
   bool prepare(uint32_t layers, uint32_t size);
   // Depth of every caster of `scene` into each layer, seen through
   // `worldToLightClip[layer]`; `objectTransforms` are the scene objects'
-  // model matrices; `sceneUpload` tells uploads apart (Renderer::uploadCount).
-  // With `keep`, layers whose inputs are unchanged since their last draw
-  // are left as they are. Returns the caster draws recorded (after culling).
+  // model matrices; `materialSets` the textured draws' sets by
+  // DrawItem::material; `sceneUpload` tells uploads apart
+  // (Renderer::uploadCount). With `keep`, layers whose inputs are unchanged
+  // since their last draw are left as they are. Returns the caster draws
+  // recorded (after culling).
   uint32_t record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
                   std::span<const glm::mat4> objectTransforms,
-                  std::span<const glm::mat4> worldToLightClip, bool keep);
+                  std::span<const glm::mat4> worldToLightClip,
+                  std::span<const VkDescriptorSet> materialSets, bool keep);
 
   // The array (or a 1x1 placeholder before prepare) and its compare sampler.
   VkImageView view() const { return map_ ? map_.view() : placeholder_.view(); }
@@ -49,13 +55,17 @@ class ShadowPass {
   PipelineLayout layout_;
   ShaderModule vertex_;
   Pipeline pipeline_;
+  PipelineLayout maskedLayout_;  // set 0: a material's textures; push: ShadowDraw with its uv
+  ShaderModule maskedVertex_, maskedFragment_;
+  Pipeline maskedPipeline_;
   Sampler sampler_;
   Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
   Image map_;
   std::vector<ImageView> layerViews_;  // one per layer: the attachment of its pass
   // Per layer, what it was last drawn from: the view matrix, then each
-  // caster's draw index and model matrix (empty: never drawn).
-  std::vector<std::vector<float>> drawnFrom_;
+  // caster's draw index, model matrix and (masked) material set, as bits
+  // (empty: never drawn).
+  std::vector<std::vector<uint32_t>> drawnFrom_;
   uint32_t drawnUpload_ = 0;
 };
 

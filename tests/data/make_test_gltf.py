@@ -218,4 +218,158 @@ def bad():
     open(os.path.join(HERE, "bad/truncated.glb"), "wb").write(whole[:len(whole) // 2])
 
 
-hierarchy(); non_indexed(); strip_fan(); textured(); lights_camera(); binary(); bad()
+def quad_primitive(b, corners, normal, uvs, material, extra_uvs=None):
+    """A quad (two counter-clockwise triangles seen from `normal`'s side)."""
+    attributes = {
+        "POSITION": b.positions(corners),
+        "NORMAL": b.accessor(floats(list(normal) * 4), 4, "VEC3"),
+        "TEXCOORD_0": b.accessor(floats([c for uv in uvs for c in uv]), 4, "VEC2")}
+    if extra_uvs:
+        attributes["TEXCOORD_1"] = b.accessor(floats([c for uv in extra_uvs for c in uv]), 4, "VEC2")
+    return {"attributes": attributes,
+            "indices": b.accessor(struct.pack("<6H", 0, 1, 2, 0, 2, 3), 6, "SCALAR", 5123),
+            "material": material}
+
+
+QUAD_UVS = [(0, 1), (1, 1), (1, 0), (0, 0)]  # glTF v down the image
+
+
+def embed_png(width, height, rgba):
+    return {"uri": "data:image/png;base64," + base64.b64encode(png(width, height, rgba)).decode()}
+
+
+def camera_and_sun(b, eye, sun_rotation, camera_rotation=(0, 0, 0, 1)):
+    """A perspective camera at `eye` looking down its -z, and a directional light."""
+    b.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+    b.doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"type": "directional", "intensity": 1}]}}
+    b.doc["cameras"] = [{"type": "perspective",
+                         "perspective": {"yfov": 0.8, "aspectRatio": 4 / 3, "znear": 0.1, "zfar": 50}}]
+    return [{"translation": list(eye), "rotation": list(camera_rotation), "camera": 0},
+            {"rotation": sun_rotation, "extensions": {"KHR_lights_punctual": {"light": 0}}}]
+
+
+def alpha_mask():
+    # alphaMode MASK: a 4x4 checker of alpha 0 and 1 (nearest) on a quad standing
+    # over a grey floor, cut-off 0.5; the sun throws the quad's shadow, with its
+    # holes, onto the floor.
+    b = Builder()
+    floor = quad_primitive(b, [(-3, 0, 3), (3, 0, 3), (3, 0, -3), (-3, 0, -3)], (0, 1, 0), QUAD_UVS, 0)
+    wall = quad_primitive(b, [(-1, 0.5, 0), (1, 0.5, 0), (1, 2.5, 0), (-1, 2.5, 0)], (0, 0, 1), QUAD_UVS, 1)
+    checker = []
+    for y in range(4):
+        for x in range(4):
+            checker += [230, 120, 40, 255 if (x + y) % 2 == 0 else 0]
+    b.doc["images"] = [embed_png(4, 4, checker)]
+    b.doc["samplers"] = [{"magFilter": 9728, "minFilter": 9728}]
+    b.doc["textures"] = [{"source": 0, "sampler": 0}]
+    b.doc["materials"] = [
+        {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1],
+                                                   "metallicFactor": 0, "roughnessFactor": 1}},
+        {"name": "cut-out", "alphaMode": "MASK", "alphaCutoff": 0.5, "pbrMetallicRoughness": {
+            "baseColorTexture": {"index": 0}, "metallicFactor": 0, "roughnessFactor": 1}}]
+    b.doc["meshes"] = [{"primitives": [floor]}, {"primitives": [wall]}]
+    s = 0.5 ** 0.5
+    # The sun in front (turned -45 degrees about x: shining down and away from
+    # the camera), so the holed shadow falls on the floor behind the quad; the
+    # camera above, looking down 25 degrees, sees it through the holes and beside.
+    b.doc["nodes"] = [{"mesh": 0}, {"mesh": 1}] + camera_and_sun(
+        b, (0, 4, 6), [-0.3826834323650898, 0, 0, 0.9238795325112867],
+        [-0.21643961393810288, 0, 0, 0.9762960071199334])
+    b.doc["scenes"] = [{"nodes": [0, 1, 2, 3]}]
+    b.finish("alpha_mask.gltf")
+
+
+def double_sided():
+    # Two quads whose front faces look away from the camera (normal -z), lit
+    # by a sun behind the camera: the left one doubleSided (drawn, its back lit
+    # with the flipped normal), the right one not (culled).
+    b = Builder()
+    left = quad_primitive(b, [(-0.2, -1, 0), (-2.2, -1, 0), (-2.2, 1, 0), (-0.2, 1, 0)], (0, 0, -1), QUAD_UVS, 0)
+    right = quad_primitive(b, [(2.2, -1, 0), (0.2, -1, 0), (0.2, 1, 0), (2.2, 1, 0)], (0, 0, -1), QUAD_UVS, 1)
+    plastic = {"baseColorFactor": [0.2, 0.5, 0.9, 1], "metallicFactor": 0, "roughnessFactor": 0.4}
+    b.doc["materials"] = [{"name": "two-sided", "doubleSided": True, "pbrMetallicRoughness": plastic},
+                          {"name": "one-sided", "pbrMetallicRoughness": plastic}]
+    b.doc["meshes"] = [{"primitives": [left]}, {"primitives": [right]}]
+    # The sun shines along -z, from behind the camera (identity rotation: its -z).
+    b.doc["nodes"] = [{"mesh": 0}, {"mesh": 1}] + camera_and_sun(b, (0, 0, 5), [0, 0, 0, 1])
+    b.doc["scenes"] = [{"nodes": [0, 1, 2, 3]}]
+    b.finish("double_sided.gltf")
+
+
+def texture_transform():
+    # KHR_texture_transform on three quads, each with the 2x2 texture (red,
+    # green / blue, white; nearest, repeat):
+    #  left: offset (0.5, 0), rotation pi/2, scale (2, 1) on the base colour;
+    #  middle: texCoord 1 overrides the textureInfo's 0 (TEXCOORD_0 is all 0);
+    #  right: a normal map (left half tilted to +x, right half to -x) shifted
+    #  half its width by offset (0.5, 0), so the halves swap.
+    b = Builder()
+    zeros = [(0, 0)] * 4
+    left = quad_primitive(b, [(-3.3, -1, 0), (-1.3, -1, 0), (-1.3, 1, 0), (-3.3, 1, 0)], (0, 0, 1), QUAD_UVS, 0)
+    middle = quad_primitive(b, [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)], (0, 0, 1), zeros, 1,
+                            extra_uvs=QUAD_UVS)
+    right = quad_primitive(b, [(1.3, -1, 0), (3.3, -1, 0), (3.3, 1, 0), (1.3, 1, 0)], (0, 0, 1), QUAD_UVS, 2)
+    colours = [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255]
+    tilt = 0.6  # the normal's x in the map
+    plus = [int(round((tilt + 1) * 127.5)), 128, int(round((1 - tilt * tilt) ** 0.5 * 127.5 + 127.5)), 255]
+    minus = [255 - plus[0]] + plus[1:]
+    b.doc["images"] = [embed_png(2, 2, colours), embed_png(2, 1, plus + minus)]
+    b.doc["samplers"] = [{"magFilter": 9728, "minFilter": 9728}]
+    b.doc["textures"] = [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0}]
+    b.doc["extensionsUsed"] = ["KHR_texture_transform"]
+    matte = {"metallicFactor": 0, "roughnessFactor": 1}
+    b.doc["materials"] = [
+        {"name": "moved", "pbrMetallicRoughness": dict(matte, baseColorTexture={
+            "index": 0, "extensions": {"KHR_texture_transform": {
+                "offset": [0.5, 0], "rotation": 1.5707963267948966, "scale": [2, 1]}}})},
+        {"name": "second set", "pbrMetallicRoughness": dict(matte, baseColorTexture={
+            "index": 0, "texCoord": 0, "extensions": {"KHR_texture_transform": {"texCoord": 1}}})},
+        {"name": "bumps swapped", "pbrMetallicRoughness": dict(matte, baseColorFactor=[0.8, 0.8, 0.8, 1]),
+         "normalTexture": {"index": 1, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0]}}}}]
+    b.doc["meshes"] = [{"primitives": [left]}, {"primitives": [middle]}, {"primitives": [right]}]
+    # The sun from the left (turned -40 degrees about y), so the tilts show.
+    nodes = camera_and_sun(b, (0, 0, 6), [0, -0.3420201433256687, 0, 0.9396926207859084])
+    b.doc["extensionsUsed"] = ["KHR_lights_punctual", "KHR_texture_transform"]
+    b.doc["nodes"] = [{"mesh": 0}, {"mesh": 1}, {"mesh": 2}] + nodes
+    b.doc["scenes"] = [{"nodes": [0, 1, 2, 3, 4]}]
+    b.finish("texture_transform.gltf")
+
+
+def bad_materials():
+    # One defect per file in the material fields the loader checks itself.
+    def masked(cutoff, name):
+        b = Builder()
+        b.doc["meshes"] = [{"primitives": [dict(triangle_mesh(b), material=0)]}]
+        b.doc["materials"] = [{"alphaMode": "MASK", "alphaCutoff": cutoff}]
+        b.doc["nodes"] = [{"mesh": 0}]
+        b.doc["scenes"] = [{"nodes": [0]}]
+        b.finish(name)
+    masked(-0.5, "bad/alpha_cutoff_negative.gltf")
+    masked("half", "bad/alpha_cutoff_not_a_number.gltf")
+
+    def transformed(transform, name, replace=None):
+        b = Builder()
+        b.doc["meshes"] = [{"primitives": [quad_primitive(
+            b, [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], (0, 0, 1), QUAD_UVS, 0)]}]
+        b.doc["images"] = [embed_png(1, 1, [255, 255, 255, 255])]
+        b.doc["textures"] = [{"source": 0}]
+        b.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {
+            "index": 0, "extensions": {"KHR_texture_transform": transform}}}}]
+        b.doc["nodes"] = [{"mesh": 0}]
+        b.doc["scenes"] = [{"nodes": [0]}]
+        b.finish(name)
+        if replace:  # JSON has no infinity: a number too large for a double stands in
+            path = os.path.join(HERE, name)
+            text = open(path).read().replace(*replace)
+            open(path, "w").write(text)
+    # 1e39 is a double but infinite as the float the shaders get; 1e999 is not
+    # even a double (the JSON parser refuses it).
+    transformed({"scale": [12345.5, 1]}, "bad/texture_transform_infinite.gltf", ("12345.5", "1e39"))
+    transformed({"offset": [12345.5, 0]}, "bad/texture_transform_1e999.gltf", ("12345.5", "1e999"))
+    transformed({"rotation": "90deg"}, "bad/texture_transform_not_a_number.gltf")
+
+
+if __name__ == "__main__":
+    hierarchy(); non_indexed(); strip_fan(); textured(); lights_camera(); binary(); bad()
+    alpha_mask(); double_sided(); texture_transform(); bad_materials()

@@ -26,8 +26,8 @@ namespace {
 using gltf::fail;
 
 // Extensions whose absence changes nothing we draw, or that we implement.
-const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual",
-                                                    "KHR_materials_emissive_strength"};
+const std::set<std::string> kSupportedExtensions = {
+    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform"};
 constexpr int kMaxDepth = 1024;  // node nesting; deeper is an attack on the stack, not a model
 
 std::vector<uint8_t> readFile(const std::filesystem::path& path) {
@@ -140,6 +140,15 @@ std::string trimmed(std::string text) {
 
 // tinygltf says only "Invalid glTF binary" for a short file and accepts any
 // version: say what is wrong. Also limits the JSON chunk's nesting.
+// The JSON chunk of a GLB whose header checkGlbHeader accepted.
+std::string_view glbJson(std::span<const uint8_t> bytes) {
+  if (bytes.size() < 20) return {};
+  uint32_t chunkLength = 0;
+  std::memcpy(&chunkLength, bytes.data() + 12, 4);
+  return std::string_view(reinterpret_cast<const char*>(bytes.data()) + 20,
+                          std::min<size_t>(chunkLength, bytes.size() - 20));
+}
+
 void checkGlbHeader(std::span<const uint8_t> bytes, const std::string& source) {
   if (bytes.size() < 12)
     throw InputError(source + ": invalid GLB: truncated, " + std::to_string(bytes.size()) +
@@ -193,11 +202,15 @@ tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& so
   if (!ok)
     throw InputError(source + ": invalid " + (binary ? "GLB" : "glTF") + ": " +
                      trimmed(error.empty() ? warning : error));
+  gltf::checkAlphaCutoffs(
+      binary ? glbJson(bytes)
+             : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+      source);
   for (const std::string& extension : model.extensionsRequired)
     if (!kSupportedExtensions.count(extension))
       throw InputError(source + ": extensionsRequired: \"" + extension +
-                       "\" is not supported (shadelab supports KHR_lights_punctual and "
-                       "KHR_materials_emissive_strength)");
+                       "\" is not supported (shadelab supports KHR_lights_punctual, "
+                       "KHR_materials_emissive_strength and KHR_texture_transform)");
   // tinygltf only warns when an external buffer is missing; nothing can be
   // drawn from it, so it is an error here.
   for (size_t i = 0; i < model.buffers.size(); ++i)
@@ -304,11 +317,12 @@ class NodeWalker {
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       int materialIndex = mesh.primitives[p].material;
       const Material& material = materials_.material(materialIndex);
-      auto key = std::make_tuple(meshIndex, int(p), mirrored);
+      int texCoordSet = materials_.texCoordSet(materialIndex);
+      auto key = std::make_tuple(meshIndex, int(p), mirrored, texCoordSet);
       auto found = meshes_.find(key);
       if (found == meshes_.end()) {
         Mesh built = gltf::primitiveMesh(model_, source_, meshIndex, int(p),
-                                         materials_.needsTangents(materialIndex));
+                                         materials_.needsTangents(materialIndex), texCoordSet);
         if (built.indices.empty()) continue;  // points or lines
         if (mirrored)
           for (size_t t = 0; t + 2 < built.indices.size(); t += 3)
@@ -395,7 +409,8 @@ class NodeWalker {
   const std::string& source_;
   Scene& scene_;
   gltf::MaterialTable materials_;
-  std::map<std::tuple<int, int, bool>, uint32_t> meshes_;  // (mesh, primitive, mirrored)
+  // (mesh, primitive, mirrored, TEXCOORD set)
+  std::map<std::tuple<int, int, bool, int>, uint32_t> meshes_;
   std::set<int> visited_;
   GltfImport* result_ = nullptr;
 };

@@ -3,6 +3,7 @@
 // and SamplerDesc.
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "core/scene/gltf_detail.h"
 #include "core/scene/texture.h"
@@ -62,7 +63,46 @@ std::vector<uint8_t> rgba8Of(const tinygltf::Image& image) {
   return rgba;
 }
 
+// KHR_texture_transform's numbers: each finite, or the field is refused.
+float finiteNumber(const tinygltf::Value& value, const std::string& source,
+                   const std::string& field) {
+  if (!value.IsNumber() || !std::isfinite(value.GetNumberAsDouble()) ||
+      !std::isfinite(float(value.GetNumberAsDouble())))
+    fail(source, field, "expected a finite number");
+  return float(value.GetNumberAsDouble());
+}
+
+glm::vec2 finitePair(const tinygltf::Value& value, const std::string& source,
+                     const std::string& field) {
+  if (!value.IsArray() || value.ArrayLen() != 2)
+    fail(source, field, "expected an array of two finite numbers");
+  return glm::vec2(finiteNumber(value.Get(0), source, field + "[0]"),
+                   finiteNumber(value.Get(1), source, field + "[1]"));
+}
+
 }  // namespace
+
+void checkAlphaCutoffs(std::string_view json, const std::string& source) {
+  if (json.find("alphaCutoff") == std::string_view::npos) return;  // nothing to check
+  // Keep only "materials" of the top level: buffers may be megabytes of base64.
+  nlohmann::json::parser_callback_t onlyMaterials = [](int depth,
+                                                       nlohmann::json::parse_event_t event,
+                                                       nlohmann::json& parsed) {
+    return !(depth == 1 && event == nlohmann::json::parse_event_t::key && parsed != "materials");
+  };
+  nlohmann::json root = nlohmann::json::parse(json, onlyMaterials, false);
+  if (!root.is_object() || !root.contains("materials") || !root["materials"].is_array()) return;
+  const nlohmann::json& materials = root["materials"];
+  for (size_t i = 0; i < materials.size(); ++i) {
+    if (!materials[i].is_object() || !materials[i].contains("alphaCutoff")) continue;
+    const nlohmann::json& cutoff = materials[i]["alphaCutoff"];
+    std::string field = "materials[" + std::to_string(i) + "].alphaCutoff";
+    if (!cutoff.is_number())
+      fail(source, field, "expected a number >= 0, got " + cutoff.dump().substr(0, 40));
+    if (!(cutoff.get<double>() >= 0.0) || !std::isfinite(cutoff.get<double>()))
+      fail(source, field, "expected a number >= 0, got " + cutoff.dump());
+  }
+}
 
 MaterialTable::MaterialTable(const tinygltf::Model& model, const std::string& source, Scene& scene)
     : model_(model), source_(source), scene_(scene) {}
@@ -70,6 +110,45 @@ MaterialTable::MaterialTable(const tinygltf::Model& model, const std::string& so
 bool MaterialTable::needsTangents(int index) const {
   return index >= 0 && size_t(index) < model_.materials.size() &&
          model_.materials[size_t(index)].normalTexture.index >= 0;
+}
+
+MaterialTable::TextureReference MaterialTable::reference(int index, int texCoord,
+                                                         const tinygltf::ExtensionMap& extensions,
+                                                         const std::string& where) const {
+  TextureReference reference{index, texCoord, {}};
+  auto found = extensions.find("KHR_texture_transform");
+  if (index < 0 || found == extensions.end()) return reference;
+  const tinygltf::Value& transform = found->second;
+  std::string field = where + ".extensions.KHR_texture_transform";
+  if (!transform.IsObject()) fail(source_, field, "expected an object");
+  if (transform.Has("offset"))
+    reference.transform.offset = finitePair(transform.Get("offset"), source_, field + ".offset");
+  if (transform.Has("rotation"))
+    reference.transform.rotation =
+        finiteNumber(transform.Get("rotation"), source_, field + ".rotation");
+  if (transform.Has("scale"))
+    reference.transform.scale = finitePair(transform.Get("scale"), source_, field + ".scale");
+  if (transform.Has("texCoord")) {
+    const tinygltf::Value& set = transform.Get("texCoord");
+    double value = set.IsNumber() ? set.GetNumberAsDouble() : -1.0;
+    if (!(value >= 0.0 && value <= 255.0 && value == std::floor(value)))
+      fail(source_, field + ".texCoord", "expected an integer from 0 to 255");
+    reference.set = int(value);  // overrides the textureInfo's texCoord
+  }
+  return reference;
+}
+
+int MaterialTable::texCoordSet(int index) const {
+  if (index < 0 || size_t(index) >= model_.materials.size()) return 0;
+  const tinygltf::Material& source = model_.materials[size_t(index)];
+  std::string where = "materials[" + std::to_string(index) + "]";
+  const tinygltf::TextureInfo& base = source.pbrMetallicRoughness.baseColorTexture;
+  if (base.index >= 0)
+    return reference(base.index, base.texCoord, base.extensions,
+                     where + ".pbrMetallicRoughness.baseColorTexture")
+        .set;
+  const tinygltf::NormalTextureInfo& normal = source.normalTexture;
+  return reference(normal.index, normal.texCoord, normal.extensions, where + ".normalTexture").set;
 }
 
 const Material& MaterialTable::material(int index) {
@@ -103,23 +182,36 @@ const Material& MaterialTable::material(int index) {
   if (strength != source.extensions.end() && strength->second.Has("emissiveStrength"))
     material.emissive *=
         std::max(float(strength->second.Get("emissiveStrength").GetNumberAsDouble()), 0.0f);
-  // Only BLEND is translucent; MASK (alpha cut-outs) draws as opaque.
+  // BLEND: translucent by the factor's alpha (the texture's alpha is not
+  // read). MASK: cut out where the factor's alpha times the texel's is below
+  // alphaCutoff (checkAlphaCutoffs refused a negative or non-numeric one).
   if (source.alphaMode == "BLEND") material.transparency = 1.0f - alpha;
+  if (source.alphaMode == "MASK") {
+    material.alphaCutoff = float(source.alphaCutoff);
+    material.alpha = alpha;
+  }
+  material.doubleSided = source.doubleSided;
   if (index >= 0) {
-    material.diffuseMap =
-        slot(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true, where);
-    material.normalMap =
-        slot(source.normalTexture.index, source.normalTexture.texCoord, false, where);
+    TextureReference base = reference(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                      pbr.baseColorTexture.extensions,
+                                      where + ".pbrMetallicRoughness.baseColorTexture");
+    TextureReference normal = reference(source.normalTexture.index, source.normalTexture.texCoord,
+                                        source.normalTexture.extensions, where + ".normalTexture");
+    // The vertices carry one uv set (texCoordSet): a texture on another is not applied.
+    int set = texCoordSet(index);
+    if (base.set == set) material.diffuseMap = slot(base, true, where);
+    if (normal.set == set) material.normalMap = slot(normal, false, where);
     if (material.normalMap.present()) material.bumpScale = float(source.normalTexture.scale);
   }
   return materials_[index] = material;
 }
 
-TextureSlot MaterialTable::slot(int textureIndex, int texCoord, bool srgb,
+TextureSlot MaterialTable::slot(const TextureReference& reference, bool srgb,
                                 const std::string& where) {
   TextureSlot slot;
-  // Only TEXCOORD_0 is read, so a texture on another set is not applied.
-  if (textureIndex < 0 || texCoord != 0) return slot;
+  int textureIndex = reference.index;
+  if (textureIndex < 0) return slot;
+  slot.transform = reference.transform;
   std::string textureWhere = where + ": textures[" + std::to_string(textureIndex) + "]";
   if (size_t(textureIndex) >= model_.textures.size())
     fail(source_, textureWhere,

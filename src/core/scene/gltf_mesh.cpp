@@ -253,7 +253,7 @@ std::string describeMesh(const tinygltf::Model& model, int mesh) {
 }
 
 Mesh primitiveMesh(const tinygltf::Model& model, const std::string& source, int meshIndex,
-                   int primitiveIndex, bool needTangents) {
+                   int primitiveIndex, bool needTangents, int texCoordSet) {
   const tinygltf::Primitive& primitive =
       model.meshes[size_t(meshIndex)].primitives[size_t(primitiveIndex)];
   PrimitiveReader reader(
@@ -290,7 +290,8 @@ Mesh primitiveMesh(const tinygltf::Model& model, const std::string& source, int 
   // glTF's v runs down the image from its first row; ours runs up (the
   // shaders sample t = 1 - v), so v flips. Tangents need no change: glTF's
   // bitangent w cross(N, T) already points up the image, as ours does.
-  fill("TEXCOORD_0", TINYGLTF_TYPE_VEC2, true,
+  std::string texCoords = "TEXCOORD_" + std::to_string(texCoordSet);
+  fill(texCoords.c_str(), TINYGLTF_TYPE_VEC2, true,
        [](Vertex& v, const float* f) { v.uv = glm::vec2(f[0], 1.0f - f[1]); });
   bool hasTangents = fill("TANGENT", TINYGLTF_TYPE_VEC4, false, [](Vertex& v, const float* f) {
     v.tangent = glm::vec4(f[0], f[1], f[2], f[3] < 0.0f ? -1.0f : 1.0f);

@@ -112,9 +112,22 @@ inline constexpr NameTable<UvProjection, 5> kUvProjectionNames = {
      {UvProjection::Box, "box"}}};
 
 // A material's use of one texture: an index into Scene::textures (-1: none).
+// glTF's KHR_texture_transform, in the uv space the texture is sampled in
+// (glTF's: origin at the image's top left): uv' = T(offset) R(rotation) S(scale) uv,
+// R = [[cos, sin], [-sin, cos]].
+struct UvTransform {
+  glm::vec2 offset{0.0f};
+  float rotation = 0.0f;  // radians
+  glm::vec2 scale{1.0f};
+  bool identity() const {
+    return offset == glm::vec2(0.0f) && rotation == 0.0f && scale == glm::vec2(1.0f);
+  }
+};
+
 struct TextureSlot {
   int32_t texture = -1;
   SamplerDesc sampler;
+  UvTransform transform;  // the rasteriser applies it to the diffuse and normal maps
   bool present() const { return texture >= 0; }
 };
 
@@ -136,6 +149,11 @@ struct Material {
   float bumpScale = 1.0f;     // normal map xy scale / height map amplitude
   UvProjection uvProjection = UvProjection::Mesh;  // where the UVs come from
   glm::vec2 uvScale{1.0f};                         // texture repeats per unit of UV (tiling)
+  // glTF alphaMode MASK: fragments whose alpha (`alpha` times the diffuse
+  // texel's alpha) is below alphaCutoff are not drawn, nor cast shadows; 0: no test.
+  float alphaCutoff = 0.0f;
+  float alpha = 1.0f;        // glTF baseColorFactor's alpha, for the MASK test
+  bool doubleSided = false;  // glTF doubleSided: not culled, back faces lit with -N
 };
 
 struct Object {

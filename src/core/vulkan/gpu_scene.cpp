@@ -28,7 +28,11 @@ static_assert(offsetof(gpu::DrawConstants, kd) == 16);
 static_assert(offsetof(gpu::DrawConstants, object) == 48);
 static_assert(offsetof(gpu::DrawConstants, texturing) == 64);
 static_assert(offsetof(gpu::DrawConstants, optics) == 80);
-static_assert(sizeof(gpu::DrawConstants) == 96);  // within the 128 bytes Vulkan guarantees
+static_assert(offsetof(gpu::DrawConstants, diffuseUv) == 96);
+static_assert(offsetof(gpu::DrawConstants, normalUv) == 112);
+// All of the 128 bytes Vulkan guarantees (and lavapipe offers): a new field
+// has to share a vec4's spare component or move to a buffer.
+static_assert(sizeof(gpu::DrawConstants) == 128);
 static_assert(offsetof(gpu::ShadowData, cube) == 16 * MAX_LIGHTS);
 static_assert(offsetof(gpu::ShadowData, bias) == 32 * MAX_LIGHTS);
 static_assert(offsetof(gpu::ShadowData, eyeToLight) == 32 * MAX_LIGHTS + 16);
@@ -110,24 +114,40 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     DrawItem draw = material.uvProjection == UvProjection::Mesh
                         ? meshRanges[object.mesh]
                         : projectedRanges.at({object.mesh, material.uvProjection});
-    draw.constants.ka = glm::vec4(material.ka, 0.0f);
+    // MASK: factor alpha x texel alpha < cutoff <=> texel alpha < cutoff / factor
+    // alpha, one threshold for the shader (above 1: nothing is left).
+    draw.masked = material.alphaCutoff > 0.0f;
+    float threshold = 0.0f;
+    if (draw.masked)
+      threshold = material.alpha > 0.0f ? material.alphaCutoff / material.alpha : 2.0f;
+    draw.hidden = draw.masked && threshold > 1.0f && !material.diffuseMap.present();
+    draw.doubleSided = material.doubleSided;
+    draw.constants.ka = glm::vec4(material.ka, threshold);
     // kd.w is the opacity the fragment shaders write as alpha.
     draw.constants.kd = glm::vec4(material.kd, 1.0f - material.transparency);
     draw.constants.ks = glm::vec4(material.ks, material.shininess);
     int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
                    (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
                    (material.heightMap.present() ? TEXTURE_HEIGHT : 0);
-    draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0, 0);
+    const UvTransform& diffuseUv = material.diffuseMap.transform;
+    const UvTransform& normalUv = material.normalMap.transform;
+    bool uvTransform = !diffuseUv.identity() || !normalUv.identity();
+    draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0,
+                                       uvTransform ? MATERIAL_UV_TRANSFORM : 0);
     draw.castsShadows = object.castsShadows;
-    draw.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, 0.0f);
+    draw.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, diffuseUv.rotation);
     draw.constants.optics =
-        glm::vec4(material.reflectivity, material.transparency, material.ior, 0.0f);
+        glm::vec4(material.reflectivity, material.transparency, material.ior, normalUv.rotation);
+    draw.constants.diffuseUv = glm::vec4(diffuseUv.offset, diffuseUv.scale);
+    draw.constants.normalUv = glm::vec4(normalUv.offset, normalUv.scale);
     draw.textured = maps != 0;
     // UV-projected copies share the mesh's positions, so its box.
     draw.worldBounds = transformBounds(meshBounds[object.mesh], object.transform);
     draw.transparent = material.transparency > 0.0f;
     gpuScene.anyTransparent |= draw.transparent;
     gpuScene.anyTextured |= draw.textured;
+    gpuScene.anyMasked |= draw.masked;
+    gpuScene.anyDoubleSided |= draw.doubleSided;
     gpuScene.bounds = i == 0 ? draw.worldBounds : unite(gpuScene.bounds, draw.worldBounds);
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;

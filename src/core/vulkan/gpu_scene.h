@@ -28,6 +28,12 @@ struct DrawItem {
   Bounds worldBounds;        // the mesh's box, transformed: what culling tests
   bool transparent = false;  // blended after the opaque draws, back to front
   bool castsShadows = true;  // drawn into the shadow maps
+  // glTF alphaMode MASK: drawn by the SPEC_ALPHA_MASK variants (threshold in
+  // constants.ka.w); `hidden` when the cut-off removes every fragment (an
+  // untextured material whose alpha is below it), so no shadow is cast either.
+  bool masked = false;
+  bool hidden = false;
+  bool doubleSided = false;  // glTF doubleSided: drawn without culling, SPEC_DOUBLE_SIDED
 };
 
 // How many lights of each kind the shaders loop over: specialization
@@ -54,6 +60,8 @@ struct GpuScene {
   LightLayout lights;
   bool anyTransparent = false;
   bool anyTextured = false;
+  bool anyMasked = false;
+  bool anyDoubleSided = false;
   Bounds bounds;  // every object's box: what the shadow maps must cover
   // Shadow-map layers by light, in FrameData::lights' order (point lights
   // first): the first of its layers (six for a point light, one for a
