@@ -230,6 +230,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   std::unique_ptr<Context> context = openContext(global);
   RenderResult result;
   RenderSettings settings{size.width, size.height};
+  std::vector<std::string> written;  // a sequence's files
   {
     Renderer renderer(*context);
     if (options.quality) {
@@ -257,14 +258,14 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.shadows = look.shadows;
     settings.shadowBias = look.shadowBias;
     settings.shadowMapSize = look.shadowMapSize;
-    if (!cameras.empty()) {
-      std::vector<std::string> written =
-          writeSequence(renderer, scene, settings, cameras, options, result.stats);
-      return reportSequence(options, scene, settings, point, written, result.stats, global,
-                            *context);
-    }
-    result = renderer.renderToImage(scene, settings);
+    if (!cameras.empty())
+      written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
+    else
+      result = renderer.renderToImage(scene, settings);
   }
+  // After the renderer is gone: finishWithValidation shuts the device down.
+  if (!cameras.empty())
+    return reportSequence(options, scene, settings, point, written, result.stats, global, *context);
   writeImage(result.image, options.output);
   std::fprintf(out, "wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled)\n",
                options.output.c_str(), size.width, size.height, scene.name.c_str(),
