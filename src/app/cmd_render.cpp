@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +17,7 @@
 #include "core/base/files.h"
 #include "core/base/image.h"
 #include "core/base/stats.h"
+#include "core/scene/camera_path.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/texture.h"
@@ -42,7 +45,49 @@ struct RenderOptions {
   std::string reference = "trace";
   std::string benchFolder;  // cached bench results; empty: a quick sweep
   JsonOutput json;
+  // Sequences: numbered frames NAME-0001.EXT ... instead of one image.
+  std::optional<int64_t> turntable;  // N frames orbiting the look-at point
+  std::string cameraPath;            // a JSON file of cameras
+  bool gif = false;                  // also NAME.gif, animated
+  int framesPerSecond = 12;
 };
+
+// The cameras of a sequence (turntable or path), or none for one image.
+std::vector<Camera> sequenceCameras(const RenderOptions& options, const Camera& camera) {
+  if (options.turntable) return turntableCameras(camera, *options.turntable);
+  if (options.cameraPath.empty()) return {};
+  std::string text = readInputFile(options.cameraPath, "camera path", kMaxTextInputBytes);
+  return parseCameraPath(text, options.cameraPath, camera);
+}
+
+// Renders one frame per camera into NAME-0001.EXT ..., all or nothing: a
+// failure part-way removes the frames written (OutputGroup). With --gif, also
+// NAME.gif. Returns the frame paths (and the GIF's, last) and the stats.
+std::vector<std::string> writeSequence(Renderer& renderer, const Scene& scene,
+                                       const FrameSettings& settings,
+                                       const std::vector<Camera>& cameras,
+                                       const RenderOptions& options, RenderStats& stats) {
+  OutputGroup outputs;
+  std::vector<std::string> written;
+  std::vector<ImageU8> animation;
+  bool progress = isatty(STDERR_FILENO);
+  stats = renderer.renderSequence(scene, settings, cameras, [&](uint32_t i, ImageRgba&& image) {
+    std::string path = sequenceFramePath(options.output, i + 1);
+    if (options.gif) animation.push_back(encodeSrgb8(image));
+    outputs.add(path, [&] { writeImage(image, path); });
+    written.push_back(path);
+    if (progress)
+      std::fprintf(stderr, "\rframe %u/%zu%s", i + 1, cameras.size(),
+                   i + 1 == cameras.size() ? "\n" : "");
+  });
+  if (options.gif) {
+    std::string gif = std::filesystem::path(options.output).replace_extension(".gif").string();
+    outputs.add(gif, [&] { writeAnimatedGif(animation, gif, options.framesPerSecond); });
+    written.push_back(gif);
+  }
+  outputs.keep();
+  return written;
+}
 
 std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, const Scene& scene,
                                                   const ErrorMetric& metric, uint32_t msaa) {
@@ -121,6 +166,36 @@ void printTimings(const FrameTimings& timings, uint32_t shadowDraws, FILE* out) 
                  shadowDraws == 0 ? "; its maps were kept from an earlier frame" : "");
 }
 
+int reportSequence(const RenderOptions& options, const Scene& scene, const RenderSettings& settings,
+                   const BenchPoint& point, const std::vector<std::string>& written,
+                   const RenderStats& stats, const GlobalOptions& global, Context& context) {
+  (void)global;
+  size_t frames = written.size() - (options.gif ? 1 : 0);
+  FILE* out = options.json.human();
+  std::fprintf(
+      out, "wrote %zu frames %s .. %s (%ux%u, scene %s, %s, %llu triangles in %u draws)%s%s\n",
+      frames, written.front().c_str(), written[frames - 1].c_str(), settings.width, settings.height,
+      scene.name.c_str(), std::string(shadingModelName(point.model)).c_str(),
+      static_cast<unsigned long long>(stats.triangles), stats.drawCalls, options.gif ? " and " : "",
+      options.gif ? written.back().c_str() : "");
+  FrameTimings timings = frameTimings(stats);
+  nlohmann::json json = {{"scene", scene.name},
+                         {"settings", toJson(settings)},
+                         {"timings", toJson(timings)},
+                         {"triangles", stats.triangles},
+                         {"draw_calls", stats.drawCalls},
+                         {"culled_draws", stats.culledDraws},
+                         {"device_memory_bytes", stats.deviceMemoryBytes},
+                         {"outputs", {{"frames", nlohmann::json::array()}}}};
+  json["settings"]["frames"] = frames;
+  json["settings"]["tess"] = point.tessellation;
+  json["settings"]["sequence"] = options.turntable ? "turntable" : "camera-path";
+  for (size_t i = 0; i < frames; ++i) json["outputs"]["frames"].push_back(jsonPath(written[i]));
+  if (options.gif) json["outputs"]["animation"] = jsonPath(written.back());
+  options.json.emit("render", json);
+  return finishWithValidation(context, 0);
+}
+
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
   Size size = parseSize(options.size, "--size");
   bool autoTessellation = options.tessellation == "auto";
@@ -136,6 +211,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   FILE* out = options.json.human();
   Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
+  std::vector<Camera> cameras = sequenceCameras(options, scene.camera);
   ViewSize view{scene.camera, size.width, size.height};
   if (autoTessellation) tessellateForView(scene, view, options.tessellationError);
   // Before building: --quality may sweep up to 4x (quality.cpp), the raster reference is 4x.
@@ -157,6 +233,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   std::unique_ptr<Context> context = openContext(global);
   RenderResult result;
   RenderSettings settings{size.width, size.height};
+  std::vector<std::string> written;  // a sequence's files
   {
     Renderer renderer(*context);
     if (options.quality) {
@@ -186,8 +263,14 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.shadowMapSize = options.quality ? point.shadowMapSize : look.shadowMapSize;
     settings.shadowBias = look.shadowBias;
     settings.keepShadowMaps = look.keepShadowMaps;
-    result = renderer.renderToImage(scene, settings);
+    if (!cameras.empty())
+      written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
+    else
+      result = renderer.renderToImage(scene, settings);
   }
+  // After the renderer is gone: finishWithValidation shuts the device down.
+  if (!cameras.empty())
+    return reportSequence(options, scene, settings, point, written, result.stats, global, *context);
   writeImage(result.image, options.output);
   std::fprintf(out, "wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled)\n",
                options.output.c_str(), size.width, size.height, scene.name.c_str(),
@@ -288,6 +371,23 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                    "--quality: choose from DIR/results.csv of an earlier bench run instead of a "
                    "quick sweep")
       ->needs(quality);
+  CLI::Option* turntable =
+      command
+          ->add_option("--turntable", options->turntable,
+                       "Render N frames orbiting the look-at point about the up axis into "
+                       "NAME-0001.EXT ... (the -o name numbered)")
+          ->excludes(quality);
+  command
+      ->add_option("--camera-path", options->cameraPath,
+                   "Render one frame per camera of a JSON file (a list of {eye, at, up, fovy}, "
+                   "or {\"frames\": N, \"cameras\": [...]} interpolated) into NAME-0001.EXT ...")
+      ->excludes(turntable)
+      ->excludes(quality);
+  command->add_flag("--gif", options->gif,
+                    "With --turntable or --camera-path: also NAME.gif, the frames animated");
+  command->add_option("--fps", options->framesPerSecond, "Frames per second of --gif")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   return [options, &global] { return runRender(*options, global); };
 }
 

@@ -488,4 +488,29 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
   return result;
 }
 
+RenderStats Renderer::renderSequence(const Scene& scene, const FrameSettings& settings,
+                                     const std::vector<Camera>& cameras,
+                                     const std::function<void(uint32_t, ImageRgba&&)>& onFrame) {
+  GpuScene gpuScene = upload(scene, {.environmentCube = settings.environment});
+  applyFrameSettings(gpuScene, settings);
+  Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
+                  VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
+  RenderStats stats;
+  stats.deviceMemoryBytes = deviceMemoryInUse();
+  Scene moving = scene;  // only its camera changes
+  lastCompletion_ = nowMs();
+  for (uint32_t i = 0; i < cameras.size(); ++i) {
+    moving.camera = cameras[i];
+    waitForFrame(stats);
+    beginFrame();
+    recordScene(gpuScene, moving, stats);
+    recordReadback(readback);
+    submitFrame();
+    // One readback buffer: this frame is read before the next is recorded.
+    finishFrames(stats);
+    onFrame(i, unpackHalfImage(readback.mapped(), settings.width, settings.height));
+  }
+  return stats;
+}
+
 }  // namespace shadelab

@@ -3,6 +3,7 @@
 // owns the frames in flight and the render target and runs the passes.
 // Headless capture is one call: renderToImage(scene, settings).
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -114,6 +115,13 @@ class Renderer {
 
   // Throws InputError for impossible settings.
   RenderResult renderToImage(const Scene& scene, const RenderSettings& settings);
+  // A sequence (turntable, camera path): the scene uploaded once, one frame
+  // per camera, each read back and handed to `onFrame(index, image)` before
+  // the next is drawn. settings.frames is ignored. Returns the stats of all
+  // frames (triangles and draws: the last frame's).
+  RenderStats renderSequence(const Scene& scene, const FrameSettings& settings,
+                             const std::vector<Camera>& cameras,
+                             const std::function<void(uint32_t, ImageRgba&&)>& onFrame);
 
   // The steps renderToImage is made of, for front ends that own the loop (the
   // viewer): upload a scene, applyFrameSettings (again whenever a setting

@@ -4,6 +4,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cassert>
@@ -121,6 +122,54 @@ void writeImage(const ImageRgba& image, const fs::path& path) {
   // given: a fixed (empty) one keeps the file byte-identical run to run.
   spec.attribute("DateTime", "");
   writeEncoded(spec, OIIO::TypeDesc::FLOAT, image.pixels.data(), path);
+}
+
+void writeAnimatedGif(const std::vector<ImageU8>& frames, const fs::path& path,
+                      int framesPerSecond) {
+  checkWritableFolder(path);
+  if (frames.empty()) throw InputError("cannot write '" + path.string() + "': no frames");
+  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create("gif");
+  if (!output || !output->supports("multiimage"))
+    throw InputError("cannot write '" + path.string() +
+                     "': this OpenImageIO has no animated GIF writer");
+  OIIO::ImageSpec spec(int(frames[0].width), int(frames[0].height), 4, OIIO::TypeDesc::UINT8);
+  int rate[2] = {framesPerSecond, 1};
+  spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
+  spec.attribute("gif:LoopCount", 0);  // for ever
+  std::vector<OIIO::ImageSpec> specs(frames.size(), spec);
+  // OpenImageIO's GIF writer encodes through giflib to a file, not to memory:
+  // a private temporary, read back whole (every frame decodes) before its
+  // bytes go through the one atomic writer, since giflib does not report a
+  // write that failed (a full disk gave a truncated file and success).
+  fs::path scratch = fs::temp_directory_path() /
+                     ("shadelab-" + std::to_string(::getpid()) + "-" + path.filename().string());
+  bool encoded = output->open(scratch.string(), int(specs.size()), specs.data());
+  for (size_t i = 0; encoded && i < frames.size(); ++i) {
+    if (frames[i].width != frames[0].width || frames[i].height != frames[0].height)
+      throw InputError("cannot write '" + path.string() + "': frames of different sizes");
+    encoded = (i == 0 || output->open(scratch.string(), spec, OIIO::ImageOutput::AppendSubimage)) &&
+              output->write_image(OIIO::TypeDesc::UINT8, frames[i].pixels.data());
+  }
+  encoded = output->close() && encoded;
+  std::error_code ignored;
+  if (!encoded || output->has_error()) {
+    fs::remove(scratch, ignored);
+    throw InputError("cannot encode '" + path.string() + "': " + output->geterror());
+  }
+  std::string bytes;
+  try {
+    bytes = readInputFile(scratch, "encoded GIF", kMaxBinaryInputBytes);
+    OIIO::ImageBuf last(scratch.string());
+    if (!last.read(int(frames.size()) - 1, 0, true, OIIO::TypeDesc::UINT8))
+      throw InputError("cannot write '" + path.string() + "': the encoded GIF (" +
+                       std::to_string(bytes.size()) + " bytes) does not hold all " +
+                       std::to_string(frames.size()) + " frames (disk full or a file size limit?)");
+  } catch (...) {
+    fs::remove(scratch, ignored);
+    throw;
+  }
+  fs::remove(scratch, ignored);
+  writeFileAtomically(path, bytes);
 }
 
 ImageU8 readImageU8(const fs::path& path) {

@@ -50,6 +50,11 @@ void checkOutputPath(const std::filesystem::path& path);
 // failure never leaves a partial file. Throws InputError on failure.
 void writeImage(const ImageRgba& image, const std::filesystem::path& path);
 void writeImage(const ImageU8& image, const std::filesystem::path& path);
+// An animated GIF of `frames` (all one size) at `framesPerSecond`, looping,
+// through OpenImageIO's GIF writer (giflib; 256 colours per frame). Written
+// atomically like writeImage. Throws InputError.
+void writeAnimatedGif(const std::vector<ImageU8>& frames, const std::filesystem::path& path,
+                      int framesPerSecond);
 // Reads any format OpenImageIO knows into 8-bit sRGB RGBA. Throws InputError.
 ImageU8 readImageU8(const std::filesystem::path& path);
 
