@@ -459,6 +459,14 @@ const std::vector<BadCase>& badCases() {
        render + "{data}/bad/missing_image.gltf",
        2,
        kError + "{data}/bad/missing_image.gltf: "},
+      // Found by the fuzzer: int(1e308) is undefined behaviour (UBSan).
+      {Group::Gltf,
+       "light index 1e308",
+       {},
+       render + "{data}/bad/light_index_1e308.gltf",
+       2,
+       kError + "{data}/bad/light_index_1e308.gltf: nodes[3]: KHR_lights_punctual: 'light' must "
+                "be the index of one of the file's 0 lights"},
       {Group::Gltf,
        "negative alphaCutoff",
        {},

@@ -300,8 +300,17 @@ class NodeWalker {
     if (node.mesh >= 0 && !collapsed) addMesh(node.mesh, world, where);
     if (node.camera >= 0 && !result_->camera) result_->camera = camera(node.camera, world, where);
     auto light = node.extensions.find("KHR_lights_punctual");
-    if (light != node.extensions.end() && light->second.Has("light"))
-      addLight(light->second.Get("light").GetNumberAsInt(), world, where);
+    if (light != node.extensions.end() && light->second.Has("light")) {
+      // A JSON number of any size: converting 1e308 to int is undefined
+      // (found by the fuzzer), so it is checked as a double first.
+      const tinygltf::Value& value = light->second.Get("light");
+      double index = value.IsNumber() ? value.GetNumberAsDouble() : -1.0;
+      if (!(index >= 0.0 && index < double(model_.lights.size())) || index != std::floor(index))
+        fail(source_, where + ": KHR_lights_punctual",
+             "'light' must be the index of one of the file's " +
+                 std::to_string(model_.lights.size()) + " lights");
+      addLight(int(index), world, where);
+    }
     for (int child : node.children) visit(child, world, depth + 1);
   }
 
