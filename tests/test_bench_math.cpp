@@ -9,9 +9,9 @@
 #include "core/metrics/chart.h"
 #include "core/metrics/error_metric.h"
 #include "core/metrics/pareto.h"
-#include "core/vulkan/depth.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/scene_loader.h"
+#include "core/vulkan/depth.h"
 #include "measure/benchmark.h"
 #include "measure/quality.h"
 

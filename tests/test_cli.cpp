@@ -813,9 +813,9 @@ TEST_F(Cli, StudyShadowEdgesMeasuresErrorAgainstMapSize) {
 TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace",
-                           "bump-silhouette", "shadow-bias", "shadow-edges", "shadow-grazing",
-                           "shadow-near"})
+  for (const char* name :
+       {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace", "bump-silhouette",
+        "shadow-bias", "shadow-edges", "shadow-grazing", "shadow-near"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 
@@ -830,18 +830,13 @@ TEST_F(Cli, StudyRefusesAnUnknownNameAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(out("s")));
 }
 
-const std::vector<std::string> kBenchColumns = {"scene",         "width",
-                                                "height",        "mode",
-                                                "tessellation",  "msaa",
-                                                "filter",        "shadows",
-                                                "shadow_size",   "triangles",
-                                                "frames",        "device_median_ms",
-                                                "device_p95_ms", "wall_median_ms",
-                                                "wall_p95_ms",   "device_memory_mb",
-                                                "peak_rss_mb",   "reference",
-                                                "rmse",          "psnr",
-                                                "ssim",          "flip",
-                                                "lights"};
+const std::vector<std::string> kBenchColumns = {
+    "scene",         "width",          "height",      "mode",
+    "tessellation",  "msaa",           "filter",      "shadows",
+    "shadow_size",   "triangles",      "frames",      "device_median_ms",
+    "device_p95_ms", "wall_median_ms", "wall_p95_ms", "device_memory_mb",
+    "peak_rss_mb",   "reference",      "rmse",        "psnr",
+    "ssim",          "flip",           "lights"};
 
 TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   CommandResult r = run("bench default -o " + out("b") +
@@ -970,8 +965,8 @@ TEST_F(Cli, ProgressAndEtaShowOnATerminalOnly) {
     EXPECT_EQ(piped.output.find("round 1/2"), std::string::npos) << piped.output;
   }
   auto onTerminal = [](const std::string& arguments) {
-    std::string command = "script -qec '" + std::string(SHADELAB_BINARY) + " " + arguments +
-                          "' /dev/null 2>&1";
+    std::string command =
+        "script -qec '" + std::string(SHADELAB_BINARY) + " " + arguments + "' /dev/null 2>&1";
     CommandResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;

@@ -307,7 +307,7 @@ TEST(RayTracer, RecursionStopsAtTheDepthOrTheContributionThreshold) {
   EXPECT_EQ(bounces(0.001f, 20), 0u);  // below 1/512 at once
 }
 
-TEST(RayTracer, ProgressRisesInTenthsToOne) {
+TEST(RayTracer, ProgressRisesInHundredthsToOne) {
   ShapeDesc sphere{ShapeKind::UvSphere};
   const Scene scene = oneObject(sphere, glm::mat4(1.0f));
   RayTracer tracer(scene);
@@ -316,7 +316,12 @@ TEST(RayTracer, ProgressRisesInTenthsToOne) {
   std::vector<float> reports;
   settings.progress = [&](float fraction) { reports.push_back(fraction); };
   tracer.render(settings);
-  ASSERT_EQ(reports.size(), 10u);  // 0.1 .. 0.9 as rows complete, then 1
+  // A report per row here (each row is 2.5 hundredths): 0.02, 0.05, 0.07,
+  // ... 0.97 as the 39 first rows complete, then 1.
+  ASSERT_EQ(reports.size(), 40u);
+  EXPECT_FLOAT_EQ(reports[0], 0.02f);
+  EXPECT_FLOAT_EQ(reports[1], 0.05f);
+  EXPECT_FLOAT_EQ(reports[38], 0.97f);
   EXPECT_EQ(reports.back(), 1.0f);
   for (size_t i = 1; i < reports.size(); ++i) EXPECT_GT(reports[i], reports[i - 1]);
 }

@@ -26,8 +26,8 @@ fs::path sceneDir() {
   static fs::path dir = [] {
     // Per process: two suites of this file run at once under ctest -j and
     // must not write the same texture while the other reads it.
-    fs::path path = fs::path(testing::TempDir()) /
-                    ("shadelab-json-textures-" + std::to_string(getpid()));
+    fs::path path =
+        fs::path(testing::TempDir()) / ("shadelab-json-textures-" + std::to_string(getpid()));
     fs::create_directories(path / "maps");
     auto out = OIIO::ImageOutput::create("png");
     std::vector<uint8_t> texels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};

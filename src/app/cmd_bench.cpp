@@ -148,7 +148,8 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
       std::fprintf(out, "%-10s %6u ", frame.c_str(), r.lights);
     }
     char error[16] = "-";
-    if (metricIndex < r.errors.size()) std::snprintf(error, sizeof error, "%.3f", r.errors[metricIndex]);
+    if (metricIndex < r.errors.size())
+      std::snprintf(error, sizeof error, "%.3f", r.errors[metricIndex]);
     std::fprintf(out, "%-12s %5g %5u %-9s %-10s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9s%s\n",
                  std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
                  r.point.msaaSamples, benchFilterName(r.point.filter).c_str(),

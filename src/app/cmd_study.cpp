@@ -8,8 +8,8 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "app/progress.h"
 #include "app/json_output.h"
+#include "app/progress.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "measure/study.h"

@@ -18,7 +18,9 @@ Progress::Progress(std::string what, double total, bool enabled, FILE* out)
       start_(std::chrono::steady_clock::now()),
       lastDraw_(start_ - std::chrono::seconds(1)) {}
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 std::string Progress::formatSeconds(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0.0) return "?";

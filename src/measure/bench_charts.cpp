@@ -184,8 +184,9 @@ ImageU8 scalingChart(const std::vector<BenchResult>& results, const std::string&
     for (const BenchResult& r : results) {
       if (!sameOtherwise(r, axis)) continue;
       ChartSeries& series = byModel[r.point.model];
-      series.name = r.point.model == ShadingModel::Unlit ? "unlit (floor)"
-                                                         : std::string(shadingModelName(r.point.model));
+      series.name = r.point.model == ShadingModel::Unlit
+                        ? "unlit (floor)"
+                        : std::string(shadingModelName(r.point.model));
       series.color = chartColor(size_t(r.point.model));
       series.connect = true;
       series.points.push_back({axis.x(r), r.deviceMedianMs, ""});

@@ -1,12 +1,12 @@
 #include "measure/benchmark.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/constants.hpp>
 #include <map>
-#include <tuple>
 #include <sstream>
+#include <tuple>
 
 #include "core/base/errors.h"
 #include "core/base/process_memory.h"
@@ -34,8 +34,8 @@ std::vector<BenchPoint> benchPoints(const BenchAxes& axes) {
           for (const std::optional<TextureFilter>& filter : axes.filters)
             for (auto [method, size] : shadows)
               for (ShadingModel model : axes.models)
-                points.push_back({model, tessellation, samples, filter, method, size, frame.x,
-                                  frame.y, lights});
+                points.push_back(
+                    {model, tessellation, samples, filter, method, size, frame.x, frame.y, lights});
   return points;
 }
 
@@ -103,8 +103,8 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
                ") at " + std::to_string(point.width) + "x" + std::to_string(point.height) +
                (point.lights > 0 ? ", " + std::to_string(point.lights) + " lights" : ""));
       Scene lit = point.lights > 0 ? withLightRing(scene, point.lights) : scene;
-      references.emplace(frame, encodeSrgb8(options.reference.render(renderer, lit, point.width,
-                                                                       point.height)));
+      references.emplace(
+          frame, encodeSrgb8(options.reference.render(renderer, lit, point.width, point.height)));
     }
   }
 

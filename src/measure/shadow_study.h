@@ -50,8 +50,7 @@ struct ShadowErrors {
 // clips casters nearer than a map's near plane (study shadow-near).
 ShadowErrors measureShadowErrors(Renderer& renderer, const Scene& scene, uint32_t light,
                                  const ShadowTruth& truth, ShadowMethod method,
-                                 const ShadowBias& bias, uint32_t mapSize,
-                                 bool depthClamp = true);
+                                 const ShadowBias& bias, uint32_t mapSize, bool depthClamp = true);
 
 // One point of the bias study.
 struct BiasStudyRow {

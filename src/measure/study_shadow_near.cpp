@@ -64,8 +64,8 @@ StudyResult runShadowNearStudy(const StudyOptions& options, const StudyServices&
   chart.y = {"percent", AxisScale::Linear};
   std::vector<SheetCell> cells;
   for (bool clamp : {true, false}) {
-    ChartSeries series{clamp ? "depth clamp" : "clipped",
-                       chartColor(clamp ? 0 : 1), {}, true, Marker::Dot};
+    ChartSeries series{
+        clamp ? "depth clamp" : "clipped", chartColor(clamp ? 0 : 1), {}, true, Marker::Dot};
     for (float distance : distances) {
       Scene scene = nearPlaneScene(distance);
       ShadowTruth truth = traceShadowTruth(scene, 0, options.width, options.height);
@@ -93,7 +93,8 @@ StudyResult runShadowNearStudy(const StudyOptions& options, const StudyServices&
         std::snprintf(lines[1], sizeof lines[1], "shadowed drawn lit: %.1f%%",
                       100.0 * errors.leakFraction());
         cells.push_back({encodeSrgb8(services.renderer().renderToImage(scene, settings).image),
-                         clamp ? "depth clamp" : "clipped", {lines[0], lines[1]}});
+                         clamp ? "depth clamp" : "clipped",
+                         {lines[0], lines[1]}});
       }
     }
     chart.series.push_back(series);

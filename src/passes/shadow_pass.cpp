@@ -81,8 +81,9 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
 }
 
 Pipeline ShadowPass::createDepthPipeline(bool masked, bool depthClamp) const {
-  VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+  VkPipelineShaderStageCreateInfo stages[2] = {
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
   stages[0].module = masked ? maskedVertex_.get() : vertex_.get();
   stages[0].pName = "main";
@@ -249,8 +250,7 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t
           worldToLightClip[layer] * objectTransforms[size_t(draw.constants.object.x)];
       bool masked = isMaskedCaster(draw);
       if (masked != maskedBound) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                          pipeline(masked, depthClamp));
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline(masked, depthClamp));
         maskedBound = masked;
       }
       if (masked) {

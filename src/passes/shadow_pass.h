@@ -45,8 +45,7 @@ class ShadowPass {
   uint32_t record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
                   std::span<const glm::mat4> objectTransforms,
                   std::span<const glm::mat4> worldToLightClip,
-                  std::span<const VkDescriptorSet> materialSets, bool keep,
-                  bool depthClamp = true);
+                  std::span<const VkDescriptorSet> materialSets, bool keep, bool depthClamp = true);
 
   // The array (or a 1x1 placeholder before prepare) and its compare sampler.
   VkImageView view() const { return map_ ? map_.view() : placeholder_.view(); }
