@@ -79,7 +79,8 @@ void writeTestPng(const fs::path& path, const PngKind& kind, int width, int heig
   if (kind.colorType == PNG_COLOR_TYPE_PALETTE)  // indices within the palette
     for (png_byte& byte : pixels) byte &= kind.bitDepth == 8 ? 0x0f : 0xff;
   if (kind.transparentEntry && kind.colorType == PNG_COLOR_TYPE_RGB && kind.bitDepth == 8)
-    for (int x = 0; x < width; x += 3) pixels[x * 3] = 10, pixels[x * 3 + 1] = 20, pixels[x * 3 + 2] = 30;
+    for (int x = 0; x < width; x += 3)
+      pixels[x * 3] = 10, pixels[x * 3 + 1] = 20, pixels[x * 3 + 2] = 30;
   std::vector<png_bytep> rows(height);
   for (int y = 0; y < height; ++y) rows[y] = pixels.data() + y * rowBytes;
   png_write_image(png, rows.data());

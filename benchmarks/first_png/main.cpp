@@ -15,13 +15,13 @@
 #include "triangle_frag.h"
 #include "triangle_vert.h"
 
-#define CHECK(call)                                                                   \
-  do {                                                                                \
-    VkResult result_ = (call);                                                        \
-    if (result_ != VK_SUCCESS) {                                                      \
+#define CHECK(call)                                                                         \
+  do {                                                                                      \
+    VkResult result_ = (call);                                                              \
+    if (result_ != VK_SUCCESS) {                                                            \
       std::fprintf(stderr, "%s failed: VkResult %d (line %d)\n", #call, result_, __LINE__); \
-      std::exit(1);                                                                   \
-    }                                                                                 \
+      std::exit(1);                                                                         \
+    }                                                                                       \
   } while (0)
 
 namespace {
@@ -30,7 +30,8 @@ uint32_t memoryType(VkPhysicalDevice gpu, uint32_t bits, VkMemoryPropertyFlags w
   VkPhysicalDeviceMemoryProperties properties;
   vkGetPhysicalDeviceMemoryProperties(gpu, &properties);
   for (uint32_t i = 0; i < properties.memoryTypeCount; ++i)
-    if ((bits & (1u << i)) && (properties.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+    if ((bits & (1u << i)) && (properties.memoryTypes[i].propertyFlags & wanted) == wanted)
+      return i;
   std::fprintf(stderr, "no memory type\n");
   std::exit(1);
 }
@@ -86,7 +87,8 @@ int main(int argc, char** argv) {
   queueInfo.queueFamilyIndex = 0;  // lavapipe's one family does everything
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
-  VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceVulkan13Features features13{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   features13.dynamicRendering = VK_TRUE;
   features13.synchronization2 = VK_TRUE;
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
@@ -167,7 +169,8 @@ int main(int argc, char** argv) {
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkPipelineColorBlendAttachmentState blendAttachment{};
   blendAttachment.colorWriteMask = 0xf;
-  VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  VkPipelineColorBlendStateCreateInfo blend{
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = 1;
   blend.pAttachments = &blendAttachment;
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -218,10 +221,10 @@ int main(int argc, char** argv) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   vkCmdEndRendering(cmd);
-  imageBarrier(cmd, image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-               VK_ACCESS_2_TRANSFER_READ_BIT);
+  imageBarrier(
+      cmd, image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {width, height, 1};
@@ -261,7 +264,8 @@ int main(int argc, char** argv) {
   vkFreeMemory(device, imageMemory, nullptr);
   vkDestroyDevice(device, nullptr);
   vkDestroyInstance(instance, nullptr);
-  double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s (%ux%u, one triangle) in %.1f ms inside main()\n", argv[1], width, height,
               ms);
   return 0;

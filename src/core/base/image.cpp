@@ -112,8 +112,8 @@ void writeImage(const ImageU8& image, const fs::path& path) {
                      oiio::PixelType::UInt8, image.pixels.data(), {{"oiio:ColorSpace", "sRGB"}});
     return;
   }
-  writeFileAtomically(path, encodePngRgba8(image.width, image.height, image.pixels.data(),
-                                           path.string()));
+  writeFileAtomically(
+      path, encodePngRgba8(image.width, image.height, image.pixels.data(), path.string()));
 }
 
 void writeImage(const ImageRgba& image, const fs::path& path) {

@@ -46,9 +46,9 @@ class ImageFile {
 struct TextBox {  // OIIO::ROI of text_size: the box relative to the origin
   int xBegin = 0, xEnd = 0, yBegin = 0, yEnd = 0;
 };
-enum class AlignX : int { Left, Right, Center };  // ImageBufAlgo::TextAlignX
+enum class AlignX : int { Left, Right, Center };            // ImageBufAlgo::TextAlignX
 enum class AlignY : int { Baseline, Top, Bottom, Center };  // ImageBufAlgo::TextAlignY
-struct Clip {  // a ROI over x and y, all four channels
+struct Clip {                                               // a ROI over x and y, all four channels
   int xBegin, xEnd, yBegin, yEnd;
   bool contains(int x, int y) const { return x >= xBegin && x < xEnd && y >= yBegin && y < yEnd; }
 };

@@ -141,7 +141,8 @@ bool encode(png_structp png, png_infop info, uint32_t width, uint32_t height,
 }  // namespace
 
 bool hasPngSignature(std::string_view bytes) {
-  return bytes.size() >= 8 && png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) == 0;
+  return bytes.size() >= 8 &&
+         png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) == 0;
 }
 
 std::string encodePngRgba8(uint32_t width, uint32_t height, const uint8_t* pixels,

@@ -96,8 +96,8 @@ std::pair<double, double> axisRange(const ChartAxis& axis, double low, double hi
 }
 
 // Marks and lines are clipped to `clip` (the plot area, or the whole image).
-void fillDisc(Canvas& image, double cx, double cy, double radius, const float* color,
-              double inner, const Clip& clip) {
+void fillDisc(Canvas& image, double cx, double cy, double radius, const float* color, double inner,
+              const Clip& clip) {
   for (int y = int(std::floor(cy - radius)); y <= int(std::ceil(cy + radius)); ++y)
     for (int x = int(std::floor(cx - radius)); x <= int(std::ceil(cx + radius)); ++x) {
       double d = std::hypot(x - cx, y - cy);
@@ -113,8 +113,8 @@ void drawThickLine(Canvas& image, double x0, double y0, double x1, double y1, co
   }
 }
 
-void drawMarker(Canvas& image, Marker marker, double x, double y, double size,
-                const float* color, const Clip& clip) {
+void drawMarker(Canvas& image, Marker marker, double x, double y, double size, const float* color,
+                const Clip& clip) {
   if (marker == Marker::Dot) fillDisc(image, x, y, size, color, -1.0, clip);
   if (marker == Marker::Ring) fillDisc(image, x, y, size + 4.0, color, size + 2.0, clip);
 }
@@ -129,8 +129,8 @@ void drawVerticalText(Canvas& image, int centerX, int centerY, const std::string
   image.paste(centerX - height / 2, centerY - width / 2, *turned);
 }
 
-void drawAxes(Canvas& image, const Chart& chart, const Mapping& mx, const Mapping& my,
-              int plotLeft, int plotTop, int plotRight, int plotBottom) {
+void drawAxes(Canvas& image, const Chart& chart, const Mapping& mx, const Mapping& my, int plotLeft,
+              int plotTop, int plotRight, int plotBottom) {
   // A tick can fall just outside the plot when the range was widened with
   // another tick step; OpenImageIO aborts on text placed off the image.
   for (double tick : axisTicks(mx.low, mx.high, chart.x.scale)) {

@@ -1,12 +1,12 @@
 // libshadelab_oiio.so: the one place that links OpenImageIO, loaded with
 // dlopen on first use (core/base/oiio_module.h says why). Each function is
 // the OpenImageIO call its caller made before the module existed.
+#include "core/base/oiio_module.h"
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
-
-#include "core/base/oiio_module.h"
 
 namespace shadelab::oiio {
 namespace {
@@ -15,24 +15,36 @@ namespace IBA = OIIO::ImageBufAlgo;
 
 OIIO::TypeDesc typeDesc(PixelType type) {
   switch (type) {
-    case PixelType::UInt8: return OIIO::TypeDesc::UINT8;
-    case PixelType::UInt16: return OIIO::TypeDesc::UINT16;
-    case PixelType::Half: return OIIO::TypeDesc::HALF;
-    case PixelType::Float: return OIIO::TypeDesc::FLOAT;
-    case PixelType::Double: return OIIO::TypeDesc::DOUBLE;
-    case PixelType::Other: break;
+    case PixelType::UInt8:
+      return OIIO::TypeDesc::UINT8;
+    case PixelType::UInt16:
+      return OIIO::TypeDesc::UINT16;
+    case PixelType::Half:
+      return OIIO::TypeDesc::HALF;
+    case PixelType::Float:
+      return OIIO::TypeDesc::FLOAT;
+    case PixelType::Double:
+      return OIIO::TypeDesc::DOUBLE;
+    case PixelType::Other:
+      break;
   }
   return OIIO::TypeDesc::UNKNOWN;
 }
 
 PixelType pixelType(OIIO::TypeDesc type) {
   switch (type.basetype) {
-    case OIIO::TypeDesc::UINT8: return PixelType::UInt8;
-    case OIIO::TypeDesc::UINT16: return PixelType::UInt16;
-    case OIIO::TypeDesc::HALF: return PixelType::Half;
-    case OIIO::TypeDesc::FLOAT: return PixelType::Float;
-    case OIIO::TypeDesc::DOUBLE: return PixelType::Double;
-    default: return PixelType::Other;
+    case OIIO::TypeDesc::UINT8:
+      return PixelType::UInt8;
+    case OIIO::TypeDesc::UINT16:
+      return PixelType::UInt16;
+    case OIIO::TypeDesc::HALF:
+      return PixelType::Half;
+    case OIIO::TypeDesc::FLOAT:
+      return PixelType::Float;
+    case OIIO::TypeDesc::DOUBLE:
+      return PixelType::Double;
+    default:
+      return PixelType::Other;
   }
 }
 
@@ -83,8 +95,8 @@ class OiioCanvas final : public Canvas {
   }
   bool text(int x, int y, const std::string& text, int size, const std::string& font,
             const float color[4], AlignX alignX, AlignY alignY, std::string& error) override {
-    if (IBA::render_text(buffer_, x, y, text, size, font, {color, 4},
-                         IBA::TextAlignX(int(alignX)), IBA::TextAlignY(int(alignY))))
+    if (IBA::render_text(buffer_, x, y, text, size, font, {color, 4}, IBA::TextAlignX(int(alignX)),
+                         IBA::TextAlignY(int(alignY))))
       return true;
     error = buffer_.geterror();
     return false;
@@ -102,8 +114,8 @@ class OiioCanvas final : public Canvas {
   }
   void getRgba8(uint8_t* out) const override {
     const OIIO::ImageSpec& spec = buffer_.spec();
-    buffer_.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 4),
-                       OIIO::TypeDesc::UINT8, out);
+    buffer_.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 4), OIIO::TypeDesc::UINT8,
+                       out);
   }
 
  private:

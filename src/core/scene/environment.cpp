@@ -1,6 +1,5 @@
 #include "core/scene/environment.h"
 
-
 #include <algorithm>
 #include <bit>
 #include <cassert>
@@ -167,8 +166,7 @@ ImageRgba readLinearImage(const std::filesystem::path& path) {
     throw InputError("image '" + path.string() + "' does not exist");
   checkInputFile(path, "image", kMaxBinaryInputBytes);
   ImageReader source(path, "cannot read image '" + path.string() + "'");
-  checkTextureSize("image '" + path.string() + "'", source.header().width,
-                   source.header().height);
+  checkTextureSize("image '" + path.string() + "'", source.header().width, source.header().height);
   source.read(oiio::PixelType::Float);
   const oiio::ImageHeader& spec = source.header();
   // Integer files hold sRGB-encoded display values; float files hold radiance.
