@@ -24,5 +24,6 @@ log=build/fuzz/fuzz.log
 status=0
 ctest --preset fuzz --verbose >"$log" 2>&1 || status=$?
 grep -E '#[0-9]+[[:space:]]+DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb|Test +#[0-9]+:' "$log" || true
-tail -n 1 "$log"
+summary=$(grep -E '^[0-9]+% tests passed' "$log" | tail -n 1) || true
+echo "${summary:-$(tail -n 1 "$log")}"
 exit "$status"
