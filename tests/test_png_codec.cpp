@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/image.h"
 #include "core/base/image_reader.h"
