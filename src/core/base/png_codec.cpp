@@ -3,6 +3,7 @@
 #include <png.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
@@ -147,6 +148,19 @@ bool hasPngSignature(std::string_view bytes) {
 
 std::string encodePngRgba8(uint32_t width, uint32_t height, const uint8_t* pixels,
                            const std::string& name) {
+  // OpenImageIO takes pixels as associated alpha and writes PNG's
+  // unassociated form: c * 255 / a in integers, capped, where 0 < a < 255.
+  std::vector<uint8_t> unassociated;
+  size_t count = size_t(width) * height * 4;
+  for (size_t p = 3; p < count && unassociated.empty(); p += 4)
+    if (pixels[p] != 255) unassociated.assign(pixels, pixels + count);
+  for (size_t p = 0; p < unassociated.size(); p += 4) {
+    unsigned alpha = unassociated[p + 3];
+    if (alpha == 0) continue;
+    for (int c = 0; c < 3; ++c)
+      unassociated[p + c] = uint8_t(std::min(255u, unsigned(unassociated[p + c]) * 255u / alpha));
+  }
+  if (!unassociated.empty()) pixels = unassociated.data();
   PngError error;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, onError, onWarning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;

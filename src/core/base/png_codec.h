@@ -4,7 +4,7 @@
 // OpenImageIO 2.4 did, so files and decoded pixels stay bit-identical:
 // the writer emits OpenImageIO's chunks (gAMA/sRGB/cHRM, oFFs, the
 // "oiio:ColorSpace" text that tells OpenImageIO readers the file is sRGB)
-// with libpng's default filters and zlib level; the reader expands palette,
+// with its zlib level and strategy, and un-associates alpha as it did; the reader expands palette,
 // grey below 8 bits and tRNS like png_set_expand and associates alpha the
 // way OpenImageIO's PNG reader does.
 #include <cstdint>
