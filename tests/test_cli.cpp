@@ -772,6 +772,30 @@ TEST_F(Cli, StudyShadowGrazingKeepsTheDefaultBiasFreeOfAcne) {
   expectDrawnChart(out("sg/shadow_grazing.png"));
 }
 
+TEST_F(Cli, StudyShadowNearKeepsCastersBeforeTheNearPlane) {
+  CommandResult r = run("study shadow-near -o " + out("sn") + " --size 160x90");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("sn/shadow_near.csv")));
+  ASSERT_EQ(rows.size(), 1u + 2 * 8) << "header + 2 depth-clamp settings x 8 distances";
+  EXPECT_EQ(rows[0][3], "depth_clamp");
+  EXPECT_EQ(rows[0][6], "leak_percent");
+  std::map<std::string, double> leak;  // "on|off distance" -> truly shadowed drawn lit, percent
+  for (size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_GT(std::stoul(rows[i][4]), 10u) << "each distance has shadowed pixels to count";
+    leak[rows[i][3] + " " + rows[i][0]] = std::stod(rows[i][6]);
+  }
+  for (const char* distance : {"0.3", "0.15", "0.1", "0.08", "0.065", "0.05", "0.04", "0.03"})
+    EXPECT_LT(leak.at(std::string("on ") + distance), 1.0)
+        << "with depth clamp the card casts at " << distance;
+  // Without the clamp the failure the study is about shows where the card
+  // crosses the near plane (0.05), and not before.
+  EXPECT_LT(leak.at("off 0.1"), 1.0);
+  EXPECT_GT(leak.at("off 0.04"), 50.0);
+  EXPECT_GT(leak.at("off 0.03"), 90.0);
+  expectDrawnChart(out("sn/shadow_near.png"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(out("sn/shadow_near_renders.png")));
+}
+
 TEST_F(Cli, StudyShadowEdgesMeasuresErrorAgainstMapSize) {
   CommandResult r = run("study shadow-edges -o " + out("se") + " --size 160x90");
   ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -790,7 +814,8 @@ TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace",
-                           "bump-silhouette", "shadow-bias", "shadow-edges"})
+                           "bump-silhouette", "shadow-bias", "shadow-edges", "shadow-grazing",
+                           "shadow-near"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 
@@ -815,7 +840,8 @@ const std::vector<std::string> kBenchColumns = {"scene",         "width",
                                                 "wall_p95_ms",   "device_memory_mb",
                                                 "peak_rss_mb",   "reference",
                                                 "rmse",          "psnr",
-                                                "ssim",          "flip"};
+                                                "ssim",          "flip",
+                                                "lights"};
 
 TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   CommandResult r = run("bench default -o " + out("b") +
@@ -877,8 +903,9 @@ TEST_F(Cli, BenchSweepsShadowMethodsAndMapSizes) {
   EXPECT_EQ(rows[2][8], "256");
   EXPECT_EQ(rows[5][7], "pcf3");
   EXPECT_EQ(rows[5][8], "1024");
-  size_t flip = rows[0].size() - 1;
+  size_t flip = rows[0].size() - 2;
   ASSERT_EQ(rows[0][flip], "flip");
+  ASSERT_EQ(rows[0].back(), "lights");
   for (size_t i = 2; i < rows.size(); ++i)
     EXPECT_LT(std::stod(rows[i][flip]), std::stod(rows[1][flip])) << rows[i][7] << rows[i][8];
   CommandResult bad = run("bench -o " + out("t") + " --shadows soft");
@@ -888,6 +915,43 @@ TEST_F(Cli, BenchSweepsShadowMethodsAndMapSizes) {
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("--shadow-sizes 0"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(out("t")));
+}
+
+// Frame size and light count are axes too (issue 18's scaling charts): one
+// row per size x count x model, the lights column counts the ring's lights,
+// --reference none times without tracing, and scaling.png has a panel per
+// axis that varies. More pixels and more lights cost more for Phong.
+TEST_F(Cli, BenchSweepsFrameSizesAndLightCounts) {
+  CommandResult r = run("bench default -o " + out("sl") +
+                        " --size 64x36,256x144 --lights 1,8 --frames 4 --rounds 1 "
+                        "--modes unlit,phong --tess 1 --msaa 1 --reference none");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("reference: "), std::string::npos) << "none traces nothing";
+  auto rows = csvRows(readText(out("sl/results.csv")));
+  ASSERT_EQ(rows.size(), 1u + 2 * 2 * 2) << "header + sizes x light counts x models";
+  ASSERT_EQ(rows[0].back(), "lights");
+  std::map<std::string, double> phong;  // "width lights" -> device median ms
+  for (size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i][17], "none");
+    EXPECT_EQ(rows[i][18], "") << "no error measured";
+    if (rows[i][3] == "phong") phong[rows[i][1] + " " + rows[i].back()] = std::stod(rows[i][11]);
+  }
+  EXPECT_EQ(rows[1][1], "64");
+  EXPECT_EQ(rows[1][2], "36");
+  EXPECT_EQ(rows[8][1], "256");
+  EXPECT_EQ(rows[8].back(), "8");
+  ASSERT_EQ(phong.size(), 4u);
+  EXPECT_GT(phong.at("256 1"), phong.at("64 1")) << "16x the pixels";
+  EXPECT_GT(phong.at("256 8"), phong.at("256 1")) << "8 lights against 1";
+  EXPECT_EQ(pngSize(out("sl/scaling.png")), std::make_pair(1040u, 420u)) << "two panels";
+  expectDrawnChart(out("sl/scaling.png"));
+  for (const char* bad : {"--lights 9", "--lights 0", "--lights two", "--size 64x36,0x5"}) {
+    CommandResult refused = run("bench default -o " + out("bad") + " " + bad);
+    EXPECT_EQ(refused.exitCode, 2) << bad << "\n" << refused.output;
+    EXPECT_NE(refused.output.find(std::string(bad).substr(0, 7)), std::string::npos)
+        << refused.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out("bad")));
 }
 
 // With bench results given, the loosest bound picks the row the CSV says is cheapest.

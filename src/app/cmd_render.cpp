@@ -201,6 +201,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   bool autoTessellation = options.tessellation == "auto";
   float factor = autoTessellation ? 1.0f : parseTessellationFactor(options.tessellation);
   BenchPoint point{parseNamed(kShadingModelNames, options.mode, "--mode"), factor, options.msaa};
+  point.width = size.width;
+  point.height = size.height;
   DepthMode depth = parseNamed(kDepthModeNames, options.depth, "--depth");
   FrameSettings look;
   applyLookOptions(options.look, look);
@@ -250,6 +252,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
                               quick ? "a quick sweep against the " + reference.name + " reference"
                                     : options.benchFolder + "/results.csv",
                               out);
+      point.width = size.width;  // chosen for this render's size, whatever the table's
+      point.height = size.height;
     }
     if (point.tessellation != 1.0f) scene.retessellate(point.tessellation);
     settings.shadingModel = point.model;

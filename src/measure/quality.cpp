@@ -30,10 +30,11 @@ std::vector<QualityCandidate> quickQualitySweep(
       {msaa},
       {std::nullopt},
       {ShadowMethod::Off, ShadowMethod::Hard, ShadowMethod::Pcf3},
-      {kDefaultShadowMapSize}};
+      {kDefaultShadowMapSize},
+      {{width, height}}};
   // Few frames: enough to rank settings whose costs differ by more than the
   // noise; `bench` measures properly.
-  BenchOptions options{width, height, /* frames= */ 8, /* rounds= */ 1, reference, {metric}};
+  BenchOptions options{/* frames= */ 8, /* rounds= */ 1, reference, {metric}};
   std::vector<BenchResult> results =
       runBenchmark(renderer, scene, benchPoints(axes), options, progress);
   std::vector<QualityCandidate> candidates;
