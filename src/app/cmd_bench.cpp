@@ -14,6 +14,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/json_output.h"
+#include "app/progress.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/scene/scene_loader.h"
@@ -194,8 +195,13 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     std::fprintf(stderr, "bench: scene %s at %s, %zu settings x %u rounds x %u frames\n",
                  scene.name.c_str(), options.size.c_str(), points.size(), options.rounds,
                  options.frames);
-    results = runBenchmark(renderer, scene, points, bench, [](const std::string& line) {
-      std::fprintf(stderr, "  %s\n", line.c_str());
+    // Each run and reference as it finishes, with an ETA, on a terminal only.
+    Progress progress("bench", double(points.size()) * options.rounds);
+    results = runBenchmark(renderer, scene, points, bench, [&](const std::string& line) {
+      if (line.rfind("round ", 0) == 0)
+        progress.step(line);
+      else
+        progress.note(line);
     });
   }
   fs::path folder(options.output);
