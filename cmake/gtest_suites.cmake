@@ -1,7 +1,8 @@
 # One ctest test per GoogleTest *suite* instead of per test.
 #
-# Every test process pays ~0.35 s to load OpenImageIO's 260 shared libraries,
-# and a GPU test process ~0.8 s more to create a Vulkan instance with the
+# Every test process paid ~0.35 s to load OpenImageIO's 260 shared libraries
+# (now only shadelab_unit_tests links it; the rest load it on first use, see
+# docs/ARCHITECTURE.md), and a GPU test process ~0.8 s more to create a Vulkan instance with the
 # validation layer. Per-test processes made that 75% of the suite's time
 # (73 s on 2 cores for ~250 tests). Suites are listed from the built binary at
 # build time, like gtest_discover_tests, so a new suite can never be missed;

@@ -25,6 +25,11 @@ target_link_libraries(shadelab_library INTERFACE shadelab_measure)
 install(TARGETS ${shadelab_library_targets} shadelab_library EXPORT shadelabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS shadelab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The OpenImageIO module, loaded on first use (src/core/base/oiio_module.h):
+# the installed binary finds it from its own folder, programs built against
+# the package through a RUNPATH (shadelab_base's INSTALL_INTERFACE link
+# option, and the -rpath in shadelab.pc).
+install(TARGETS shadelab_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/shadelab)
 # Headers keep their paths under include/shadelab ("core/base/image.h"), next
 # to interface.h, the header shared with GLSL. The viewer and the CLI are not
 # part of the library.
@@ -45,7 +50,6 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/shadelabConfigVersion.cma
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/shadelabConfig.cmake
               ${PROJECT_BINARY_DIR}/shadelabConfigVersion.cmake
-              ${PROJECT_SOURCE_DIR}/cmake/openimageio_includes.cmake
         DESTINATION ${config_dir})
 
 # pkg-config: the layers in link order, then what they link privately (they

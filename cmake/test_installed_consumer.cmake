@@ -47,6 +47,25 @@ if(NOT library_md5 STREQUAL cli_md5)
 endif()
 message(STATUS "library image == shadelab render image (md5 ${cli_md5})")
 
+# EXR needs the OpenImageIO module: the installed binary finds it beside its
+# own folder (../lib/shadelab), the consumer through the RUNPATH the package
+# gave it. Neither may reach the build tree's copy.
+run_step("run the consumer, EXR" ${WORK_DIR}/consumer/headless_capture ${WORK_DIR}/library.exr
+         default --size 320x180 ${validate_flag})
+run_step("installed shadelab render, EXR" ${prefix}/bin/shadelab render default --size 320x180
+         --mode phong --shadows off --output ${WORK_DIR}/cli.exr)
+file(MD5 ${WORK_DIR}/library.exr library_exr_md5)
+file(MD5 ${WORK_DIR}/cli.exr cli_exr_md5)
+if(NOT library_exr_md5 STREQUAL cli_exr_md5)
+  message(FATAL_ERROR "the library's EXR (${library_exr_md5}) differs from `shadelab render`'s "
+                      "(${cli_exr_md5})")
+endif()
+file(GLOB_RECURSE installed_module ${prefix}/*/libshadelab_oiio.so)
+if(NOT installed_module)
+  message(FATAL_ERROR "libshadelab_oiio.so is not installed under ${prefix}")
+endif()
+message(STATUS "EXR through the installed module (${installed_module}): md5 ${cli_exr_md5}")
+
 # 2. pkg-config: the same program compiled by hand from shadelab.pc.
 find_program(PKG_CONFIG pkg-config REQUIRED)
 find_program(CXX_COMPILER c++ REQUIRED)
@@ -63,3 +82,10 @@ if(NOT pc_md5 STREQUAL cli_md5)
   message(FATAL_ERROR "the pkg-config build's image (${pc_md5}) differs from ${cli_md5}")
 endif()
 message(STATUS "pkg-config build image == shadelab render image")
+run_step("run the pkg-config build, EXR" ${WORK_DIR}/capture_pc ${WORK_DIR}/pc.exr default
+         --size 320x180 ${validate_flag})
+file(MD5 ${WORK_DIR}/pc.exr pc_exr_md5)
+if(NOT pc_exr_md5 STREQUAL cli_exr_md5)
+  message(FATAL_ERROR "the pkg-config build's EXR (${pc_exr_md5}) differs from ${cli_exr_md5}")
+endif()
+message(STATUS "pkg-config build EXR == shadelab render EXR")

@@ -11,7 +11,7 @@ packages=(
   build-essential cmake pkg-config python3
   mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers
   glslang-tools glslang-dev
-  libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev openimageio-tools
+  libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev openimageio-tools libpng-dev
   libimgui-dev libcli11-dev nlohmann-json3-dev libstb-dev libmeshoptimizer-dev
   libgtest-dev clang-format
   fonts-dejavu-core xvfb xauth

@@ -1,9 +1,5 @@
 #include "core/base/image.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,6 +10,9 @@
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
+#include "core/base/image_reader.h"
+#include "core/base/oiio_module.h"
+#include "core/base/png_codec.h"
 
 namespace shadelab {
 namespace fs = std::filesystem;
@@ -79,25 +78,25 @@ void checkOutputPath(const fs::path& path) {
     throw InputError("output '" + path.string() + "': unsupported extension '" +
                      path.extension().string() + "' (expected .png or .exr)");
   checkWritableFolder(path);
+  // EXR needs the OpenImageIO module: load it now, so a missing one fails
+  // before the work rather than after it.
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (ext == ".exr") oiio::oiioModule("write '" + path.string() + "'");
 }
 
 namespace {
 
-// Encodes in memory (OpenImageIO's IOVecOutput), checking each step and
-// OpenImageIO's own error state, then hands the bytes to the one atomic
-// writer. `spec` holds the pixels' format as stored in the file.
-void writeEncoded(const OIIO::ImageSpec& spec, OIIO::TypeDesc pixelType, const void* pixels,
-                  const fs::path& path) {
-  checkOutputPath(path);
-  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path.string());
-  if (!output) throw InputError("cannot write '" + path.string() + "': " + OIIO::geterror());
+// Encodes in memory through the OpenImageIO module, then hands the bytes to
+// the one atomic writer.
+void encodeWithModule(const fs::path& path, int width, int height, oiio::PixelType stored,
+                      oiio::PixelType given, const void* pixels,
+                      const std::vector<std::pair<std::string, std::string>>& attributes) {
   std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  bool encoded = output->set_ioproxy(&memory) && output->open(path.string(), spec) &&
-                 output->write_image(pixelType, pixels);
-  encoded = output->close() && encoded;
-  if (!encoded || output->has_error())
-    throw InputError("cannot encode '" + path.string() + "': " + output->geterror());
+  std::string error;
+  if (!oiio::oiioModule("write '" + path.string() + "'")
+           .encode(path.string(), width, height, stored, given, pixels, attributes, bytes, error))
+    throw InputError("cannot encode '" + path.string() + "': " + error);
   writeFileAtomically(path,
                       std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
@@ -105,9 +104,16 @@ void writeEncoded(const OIIO::ImageSpec& spec, OIIO::TypeDesc pixelType, const v
 }  // namespace
 
 void writeImage(const ImageU8& image, const fs::path& path) {
-  OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", "sRGB");
-  writeEncoded(spec, OIIO::TypeDesc::UINT8, image.pixels.data(), path);
+  checkOutputPath(path);
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (ext == ".exr") {  // 8-bit values as they are, as OpenImageIO converts them
+    encodeWithModule(path, int(image.width), int(image.height), oiio::PixelType::UInt8,
+                     oiio::PixelType::UInt8, image.pixels.data(), {{"oiio:ColorSpace", "sRGB"}});
+    return;
+  }
+  writeFileAtomically(
+      path, encodePngRgba8(image.width, image.height, image.pixels.data(), path.string()));
 }
 
 void writeImage(const ImageRgba& image, const fs::path& path) {
@@ -115,52 +121,43 @@ void writeImage(const ImageRgba& image, const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
   if (ext != ".exr") return writeImage(encodeSrgb8(image), path);
-  // Stored as half, like the render target.
-  OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::HALF);
-  spec.attribute("oiio:ColorSpace", "Linear");
-  // OpenImageIO stamps the current time as the EXR capDate unless DateTime is
-  // given: a fixed (empty) one keeps the file byte-identical run to run.
-  spec.attribute("DateTime", "");
-  writeEncoded(spec, OIIO::TypeDesc::FLOAT, image.pixels.data(), path);
+  // Stored as half, like the render target. OpenImageIO stamps the current
+  // time as the EXR capDate unless DateTime is given: a fixed (empty) one
+  // keeps the file byte-identical run to run.
+  encodeWithModule(path, int(image.width), int(image.height), oiio::PixelType::Half,
+                   oiio::PixelType::Float, image.pixels.data(),
+                   {{"oiio:ColorSpace", "Linear"}, {"DateTime", ""}});
 }
 
 void writeAnimatedGif(const std::vector<ImageU8>& frames, const fs::path& path,
                       int framesPerSecond) {
   checkWritableFolder(path);
   if (frames.empty()) throw InputError("cannot write '" + path.string() + "': no frames");
-  std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create("gif");
-  if (!output || !output->supports("multiimage"))
-    throw InputError("cannot write '" + path.string() +
-                     "': this OpenImageIO has no animated GIF writer");
-  OIIO::ImageSpec spec(int(frames[0].width), int(frames[0].height), 4, OIIO::TypeDesc::UINT8);
-  int rate[2] = {framesPerSecond, 1};
-  spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
-  spec.attribute("gif:LoopCount", 0);  // for ever
-  std::vector<OIIO::ImageSpec> specs(frames.size(), spec);
+  std::vector<const uint8_t*> pixels;
+  for (const ImageU8& frame : frames) {
+    if (frame.width != frames[0].width || frame.height != frames[0].height)
+      throw InputError("cannot write '" + path.string() + "': frames of different sizes");
+    pixels.push_back(frame.pixels.data());
+  }
+  oiio::Module& module = oiio::oiioModule("write '" + path.string() + "'");
   // OpenImageIO's GIF writer encodes through giflib to a file, not to memory:
   // a private temporary, read back whole (every frame decodes) before its
   // bytes go through the one atomic writer, since giflib does not report a
   // write that failed (a full disk gave a truncated file and success).
   fs::path scratch = fs::temp_directory_path() /
                      ("shadelab-" + std::to_string(::getpid()) + "-" + path.filename().string());
-  bool encoded = output->open(scratch.string(), int(specs.size()), specs.data());
-  for (size_t i = 0; encoded && i < frames.size(); ++i) {
-    if (frames[i].width != frames[0].width || frames[i].height != frames[0].height)
-      throw InputError("cannot write '" + path.string() + "': frames of different sizes");
-    encoded = (i == 0 || output->open(scratch.string(), spec, OIIO::ImageOutput::AppendSubimage)) &&
-              output->write_image(OIIO::TypeDesc::UINT8, frames[i].pixels.data());
-  }
-  encoded = output->close() && encoded;
+  std::string error;
   std::error_code ignored;
-  if (!encoded || output->has_error()) {
+  if (!module.writeGif(scratch.string(), int(frames[0].width), int(frames[0].height), pixels,
+                       framesPerSecond, error)) {
     fs::remove(scratch, ignored);
-    throw InputError("cannot encode '" + path.string() + "': " + output->geterror());
+    throw InputError("cannot encode '" + path.string() + "': " + error);
   }
   std::string bytes;
   try {
     bytes = readInputFile(scratch, "encoded GIF", kMaxBinaryInputBytes);
-    OIIO::ImageBuf last(scratch.string());
-    if (!last.read(int(frames.size()) - 1, 0, true, OIIO::TypeDesc::UINT8))
+    std::unique_ptr<oiio::ImageFile> last = module.openImage(scratch.string());
+    if (!last->read(int(frames.size()) - 1, oiio::PixelType::UInt8, error))
       throw InputError("cannot write '" + path.string() + "': the encoded GIF (" +
                        std::to_string(bytes.size()) + " bytes) does not hold all " +
                        std::to_string(frames.size()) + " frames (disk full or a file size limit?)");
@@ -175,16 +172,14 @@ void writeAnimatedGif(const std::vector<ImageU8>& frames, const fs::path& path,
 ImageU8 readImageU8(const fs::path& path) {
   if (!fs::exists(path)) throw InputError("image '" + path.string() + "' does not exist");
   checkInputFile(path, "image", kMaxBinaryInputBytes);
-  OIIO::ImageBuf source(path.string());
-  if (!source.read(0, 0, true, OIIO::TypeDesc::UINT8))
-    throw InputError("cannot read image '" + path.string() + "': " + source.geterror());
-  const OIIO::ImageSpec& spec = source.spec();
+  ImageReader source(path, "cannot read image '" + path.string() + "'");
+  source.read(oiio::PixelType::UInt8);
+  const oiio::ImageHeader& spec = source.header();
   ImageU8 image(uint32_t(spec.width), uint32_t(spec.height));
   // Missing channels: grey replicates, alpha defaults to opaque.
-  int channels = spec.nchannels;
+  int channels = spec.channels;
   std::vector<uint8_t> raw(size_t(spec.width) * spec.height * channels);
-  source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
-                    OIIO::TypeDesc::UINT8, raw.data());
+  source.getRows(0, spec.height, oiio::PixelType::UInt8, raw.data());
   for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p) {
     const uint8_t* in = &raw[p * channels];
     uint8_t* out = &image.pixels[p * 4];

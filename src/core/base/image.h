@@ -1,6 +1,7 @@
 #pragma once
 // Images on the CPU: linear RGBA floats as rendered, and the 8-bit sRGB
-// form written to PNG. Files go through OpenImageIO.
+// form written to PNG. 8-bit PNG goes through libpng; other formats through
+// the OpenImageIO module, loaded on first use (oiio_module.h).
 #include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>

@@ -1,18 +1,21 @@
 #include "core/metrics/chart.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
 
+#include "core/base/oiio_module.h"
+
 namespace shadelab {
 namespace {
 
-namespace IBA = OIIO::ImageBufAlgo;
+// Drawn through the OpenImageIO module (FreeType text): a chart loads it.
+using oiio::AlignX;
+using oiio::AlignY;
+using oiio::Canvas;
+using oiio::Clip;
 constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr int kMarginLeft = 86, kMarginRight = 170, kMarginTop = 52, kMarginBottom = 62;
 constexpr int kTitleSize = 18, kAxisLabelSize = 15, kTickSize = 13, kPointLabelSize = 12;
@@ -25,18 +28,22 @@ struct Rect {
   bool overlaps(const Rect& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
 };
 
-void drawText(OIIO::ImageBuf& image, int x, int y, const std::string& text, int size,
-              const float* color, IBA::TextAlignX alignX = IBA::TextAlignX::Left,
-              IBA::TextAlignY alignY = IBA::TextAlignY::Baseline) {
+oiio::Module& module() {
+  return oiio::oiioModule("draw a chart");
+}
+
+void drawText(Canvas& image, int x, int y, const std::string& text, int size, const float* color,
+              AlignX alignX = AlignX::Left, AlignY alignY = AlignY::Baseline) {
   if (text.empty()) return;
-  if (!IBA::render_text(image, x, y, text, size, kFont, {color, 4}, alignX, alignY))
-    throw std::runtime_error("cannot draw chart text with " + std::string(kFont) + ": " +
-                             image.geterror() + " (install Debian package fonts-dejavu-core)");
+  std::string error;
+  if (!image.text(x, y, text, size, kFont, color, alignX, alignY, error))
+    throw std::runtime_error("cannot draw chart text with " + std::string(kFont) + ": " + error +
+                             " (install Debian package fonts-dejavu-core)");
 }
 
 Rect textRect(const std::string& text, int size, int x, int baseline) {
-  OIIO::ROI box = IBA::text_size(text, size, kFont);
-  return {x + box.xbegin, baseline + box.ybegin, x + box.xend, baseline + box.yend};
+  oiio::TextBox box = module().textSize(text, size, kFont);
+  return {x + box.xBegin, baseline + box.yBegin, x + box.xEnd, baseline + box.yEnd};
 }
 
 std::string tickText(double value) {
@@ -89,82 +96,81 @@ std::pair<double, double> axisRange(const ChartAxis& axis, double low, double hi
 }
 
 // Marks and lines are clipped to `clip` (the plot area, or the whole image).
-void fillDisc(OIIO::ImageBuf& image, double cx, double cy, double radius, const float* color,
-              double inner, const OIIO::ROI& clip) {
+void fillDisc(Canvas& image, double cx, double cy, double radius, const float* color, double inner,
+              const Clip& clip) {
   for (int y = int(std::floor(cy - radius)); y <= int(std::ceil(cy + radius)); ++y)
     for (int x = int(std::floor(cx - radius)); x <= int(std::ceil(cx + radius)); ++x) {
       double d = std::hypot(x - cx, y - cy);
-      if (d <= radius && d >= inner && clip.contains(x, y)) image.setpixel(x, y, color, 4);
+      if (d <= radius && d >= inner && clip.contains(x, y)) image.setPixel(x, y, color);
     }
 }
 
-void drawThickLine(OIIO::ImageBuf& image, double x0, double y0, double x1, double y1,
-                   const float* color, const OIIO::ROI& clip) {
+void drawThickLine(Canvas& image, double x0, double y0, double x1, double y1, const float* color,
+                   const Clip& clip) {
   for (int offset = 0; offset < 2; ++offset) {
-    IBA::render_line(image, int(std::lround(x0)), int(std::lround(y0)) + offset,
-                     int(std::lround(x1)), int(std::lround(y1)) + offset, {color, 4}, false, clip);
+    image.line(int(std::lround(x0)), int(std::lround(y0)) + offset, int(std::lround(x1)),
+               int(std::lround(y1)) + offset, color, clip);
   }
 }
 
-void drawMarker(OIIO::ImageBuf& image, Marker marker, double x, double y, double size,
-                const float* color, const OIIO::ROI& clip) {
+void drawMarker(Canvas& image, Marker marker, double x, double y, double size, const float* color,
+                const Clip& clip) {
   if (marker == Marker::Dot) fillDisc(image, x, y, size, color, -1.0, clip);
   if (marker == Marker::Ring) fillDisc(image, x, y, size + 4.0, color, size + 2.0, clip);
 }
 
-void drawVerticalText(OIIO::ImageBuf& image, int centerX, int centerY, const std::string& text) {
-  OIIO::ROI box = IBA::text_size(text, kAxisLabelSize, kFont);
-  int width = box.width() + 4, height = box.height() + 4;
-  OIIO::ImageBuf label(OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::FLOAT));
-  IBA::fill(label, {kPaper, 4});
-  drawText(label, 2 - box.xbegin, 2 - box.ybegin, text, kAxisLabelSize, kInk);
-  OIIO::ImageBuf turned = IBA::rotate270(label);  // reads bottom to top
-  IBA::paste(image, centerX - height / 2, centerY - width / 2, 0, 0, turned);
+void drawVerticalText(Canvas& image, int centerX, int centerY, const std::string& text) {
+  oiio::TextBox box = module().textSize(text, kAxisLabelSize, kFont);
+  int width = box.xEnd - box.xBegin + 4, height = box.yEnd - box.yBegin + 4;
+  std::unique_ptr<Canvas> label = module().createCanvas(width, height, oiio::PixelType::Float);
+  label->fill(kPaper);
+  drawText(*label, 2 - box.xBegin, 2 - box.yBegin, text, kAxisLabelSize, kInk);
+  std::unique_ptr<Canvas> turned = label->rotated270();  // reads bottom to top
+  image.paste(centerX - height / 2, centerY - width / 2, *turned);
 }
 
-void drawAxes(OIIO::ImageBuf& image, const Chart& chart, const Mapping& mx, const Mapping& my,
-              int plotLeft, int plotTop, int plotRight, int plotBottom) {
+void drawAxes(Canvas& image, const Chart& chart, const Mapping& mx, const Mapping& my, int plotLeft,
+              int plotTop, int plotRight, int plotBottom) {
   // A tick can fall just outside the plot when the range was widened with
   // another tick step; OpenImageIO aborts on text placed off the image.
   for (double tick : axisTicks(mx.low, mx.high, chart.x.scale)) {
     int x = int(std::lround(mx(tick)));
     if (x < plotLeft || x > plotRight) continue;
-    IBA::render_line(image, x, plotTop, x, plotBottom, {kGrid, 4});
-    IBA::render_line(image, x, plotBottom, x, plotBottom + 5, {kInk, 4});
-    drawText(image, x, plotBottom + 20, tickText(tick), kTickSize, kInk, IBA::TextAlignX::Center);
+    image.line(x, plotTop, x, plotBottom, kGrid, std::nullopt);
+    image.line(x, plotBottom, x, plotBottom + 5, kInk, std::nullopt);
+    drawText(image, x, plotBottom + 20, tickText(tick), kTickSize, kInk, AlignX::Center);
   }
   for (double tick : axisTicks(my.low, my.high, chart.y.scale)) {
     int y = int(std::lround(my(tick)));
     if (y < plotTop || y > plotBottom) continue;
-    IBA::render_line(image, plotLeft, y, plotRight, y, {kGrid, 4});
-    IBA::render_line(image, plotLeft - 5, y, plotLeft, y, {kInk, 4});
-    drawText(image, plotLeft - 8, y, tickText(tick), kTickSize, kInk, IBA::TextAlignX::Right,
-             IBA::TextAlignY::Center);
+    image.line(plotLeft, y, plotRight, y, kGrid, std::nullopt);
+    image.line(plotLeft - 5, y, plotLeft, y, kInk, std::nullopt);
+    drawText(image, plotLeft - 8, y, tickText(tick), kTickSize, kInk, AlignX::Right,
+             AlignY::Center);
   }
-  IBA::render_box(image, plotLeft, plotTop, plotRight, plotBottom, {kInk, 4});
+  image.box(plotLeft, plotTop, plotRight, plotBottom, kInk);
   drawText(image, (plotLeft + plotRight) / 2, plotBottom + 46, chart.x.label, kAxisLabelSize, kInk,
-           IBA::TextAlignX::Center);
+           AlignX::Center);
   drawVerticalText(image, plotLeft - kMarginLeft + 16, (plotTop + plotBottom) / 2, chart.y.label);
   drawText(image, plotLeft, 22, chart.title, kTitleSize, kInk);
   drawText(image, plotLeft, 38, chart.subtitle, kTickSize, kInk);
 }
 
-void drawLegend(OIIO::ImageBuf& image, const Chart& chart, int left, int top) {
+void drawLegend(Canvas& image, const Chart& chart, int left, int top) {
   int y = top + 8;
-  OIIO::ROI all = image.roi();
+  Clip all{0, image.width(), 0, image.height()};
   for (size_t i = 0; i < chart.series.size(); ++i) {
     const ChartSeries& series = chart.series[i];
     if (series.name.empty()) continue;
     float color[4] = {series.color.r, series.color.g, series.color.b, 1.0f};
     if (series.connect) drawThickLine(image, left, y, left + 22, y, color, all);
     drawMarker(image, series.marker, left + 11, y, series.markerSize, color, all);
-    drawText(image, left + 30, y, series.name, kTickSize, kInk, IBA::TextAlignX::Left,
-             IBA::TextAlignY::Center);
+    drawText(image, left + 30, y, series.name, kTickSize, kInk, AlignX::Left, AlignY::Center);
     y += 20;
   }
 }
 
-void drawChartInto(OIIO::ImageBuf& image, const Chart& chart, int originX, int width, int height) {
+void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, int height) {
   int plotLeft = originX + kMarginLeft, plotRight = originX + width - kMarginRight;
   int plotTop = kMarginTop, plotBottom = height - kMarginBottom;
   double minX = std::numeric_limits<double>::infinity(), maxX = -minX;
@@ -182,7 +188,7 @@ void drawChartInto(OIIO::ImageBuf& image, const Chart& chart, int originX, int w
   drawAxes(image, chart, mx, my, plotLeft, plotTop, plotRight, plotBottom);
 
   // Marks may reach a little past the frame, so points on an axis stay visible.
-  OIIO::ROI clip(plotLeft - 8, plotRight + 9, plotTop - 8, plotBottom + 9, 0, 1, 0, 4);
+  Clip clip{plotLeft - 8, plotRight + 9, plotTop - 8, plotBottom + 9};
   for (size_t s = 0; s < chart.series.size(); ++s) {
     const ChartSeries& series = chart.series[s];
     float color[4] = {series.color.r, series.color.g, series.color.b, 1.0f};
@@ -226,11 +232,9 @@ void drawChartInto(OIIO::ImageBuf& image, const Chart& chart, int originX, int w
   drawLegend(image, chart, plotRight + 14, plotTop);
 }
 
-ImageU8 toImage(const OIIO::ImageBuf& image) {
-  const OIIO::ImageSpec& spec = image.spec();
-  ImageU8 result(uint32_t(spec.width), uint32_t(spec.height));
-  image.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, 4), OIIO::TypeDesc::UINT8,
-                   result.pixels.data());
+ImageU8 toImage(const Canvas& image) {
+  ImageU8 result(uint32_t(image.width()), uint32_t(image.height()));
+  image.getRgba8(result.pixels.data());
   return result;
 }
 
@@ -278,11 +282,11 @@ ImageU8 drawChart(const Chart& chart, uint32_t width, uint32_t height) {
 
 ImageU8 drawChartRow(const std::vector<Chart>& charts, uint32_t panelWidth, uint32_t height) {
   int width = int(panelWidth * charts.size());
-  OIIO::ImageBuf image(OIIO::ImageSpec(width, int(height), 4, OIIO::TypeDesc::FLOAT));
-  IBA::fill(image, {kPaper, 4});
+  std::unique_ptr<Canvas> image = module().createCanvas(width, int(height), oiio::PixelType::Float);
+  image->fill(kPaper);
   for (size_t i = 0; i < charts.size(); ++i)
-    drawChartInto(image, charts[i], int(i * panelWidth), int(panelWidth), int(height));
-  return toImage(image);
+    drawChartInto(*image, charts[i], int(i * panelWidth), int(panelWidth), int(height));
+  return toImage(*image);
 }
 
 }  // namespace shadelab

@@ -1,11 +1,10 @@
 #include "core/metrics/sheet.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
+
+#include "core/base/oiio_module.h"
 
 namespace shadelab {
 namespace {
@@ -17,12 +16,15 @@ constexpr int kLineHeight = 18;
 constexpr int kTitleSize = 18;
 constexpr int kLineSize = 14;
 
-void drawText(OIIO::ImageBuf& sheet, int x, int baseline, const std::string& text, int size) {
+// Text through the OpenImageIO module (FreeType): a sheet loads it.
+void drawText(oiio::Canvas& sheet, int x, int baseline, const std::string& text, int size) {
   if (text.empty()) return;
-  if (!OIIO::ImageBufAlgo::render_text(sheet, x, baseline, text, size, kFont,
-                                       {0.92f, 0.92f, 0.92f, 1.0f}))
-    throw std::runtime_error("cannot draw sheet labels with " + std::string(kFont) + ": " +
-                             sheet.geterror() + " (install Debian package fonts-dejavu-core)");
+  static const float kLabel[4] = {0.92f, 0.92f, 0.92f, 1.0f};
+  std::string error;
+  if (!sheet.text(x, baseline, text, size, kFont, kLabel, oiio::AlignX::Left,
+                  oiio::AlignY::Baseline, error))
+    throw std::runtime_error("cannot draw sheet labels with " + std::string(kFont) + ": " + error +
+                             " (install Debian package fonts-dejavu-core)");
 }
 
 }  // namespace
@@ -42,28 +44,26 @@ ImageU8 composeSheet(const std::vector<std::vector<SheetCell>>& rows) {
   int blockHeight = kTitleHeight + int(cellHeight) + int(maxLines) * kLineHeight + kMargin;
   int width = kMargin + int(columns) * blockWidth;
   int height = kMargin + int(rows.size()) * blockHeight;
-  OIIO::ImageBuf sheet(OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::UINT8));
-  OIIO::ImageBufAlgo::fill(sheet, {0.08f, 0.08f, 0.09f, 1.0f});
+  std::unique_ptr<oiio::Canvas> sheet =
+      oiio::oiioModule("compose a sheet").createCanvas(width, height, oiio::PixelType::UInt8);
+  static const float kBackground[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+  sheet->fill(kBackground);
   for (size_t r = 0; r < rows.size(); ++r) {
     for (size_t c = 0; c < rows[r].size(); ++c) {
       const SheetCell& cell = rows[r][c];
       int x = kMargin + int(c) * blockWidth;
       int y = kMargin + int(r) * blockHeight;
-      drawText(sheet, x, y + kTitleHeight - 8, cell.title, kTitleSize);
-      if (cell.image.width > 0) {
-        OIIO::ImageSpec spec(int(cell.image.width), int(cell.image.height), 4,
-                             OIIO::TypeDesc::UINT8);
-        OIIO::ImageBuf image(spec, const_cast<uint8_t*>(cell.image.pixels.data()));
-        OIIO::ImageBufAlgo::paste(sheet, x, y + kTitleHeight, 0, 0, image);
-      }
+      drawText(*sheet, x, y + kTitleHeight - 8, cell.title, kTitleSize);
+      if (cell.image.width > 0)
+        sheet->pasteRgba8(x, y + kTitleHeight, int(cell.image.width), int(cell.image.height),
+                          cell.image.pixels.data());
       for (size_t l = 0; l < cell.lines.size(); ++l)
-        drawText(sheet, x, y + kTitleHeight + int(cellHeight) + int(l + 1) * kLineHeight - 4,
+        drawText(*sheet, x, y + kTitleHeight + int(cellHeight) + int(l + 1) * kLineHeight - 4,
                  cell.lines[l], kLineSize);
     }
   }
   ImageU8 result{uint32_t(width), uint32_t(height)};
-  sheet.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 4), OIIO::TypeDesc::UINT8,
-                   result.pixels.data());
+  sheet->getRgba8(result.pixels.data());
   return result;
 }
 

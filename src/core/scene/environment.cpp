@@ -1,7 +1,5 @@
 #include "core/scene/environment.h"
 
-#include <OpenImageIO/imagebuf.h>
-
 #include <algorithm>
 #include <bit>
 #include <cassert>
@@ -9,6 +7,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
+#include "core/base/image_reader.h"
 #include "core/scene/texture.h"
 
 namespace shadelab {
@@ -166,20 +165,15 @@ ImageRgba readLinearImage(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, error))
     throw InputError("image '" + path.string() + "' does not exist");
   checkInputFile(path, "image", kMaxBinaryInputBytes);
-  OIIO::ImageBuf source(path.string());
-  if (!source.init_spec(path.string(), 0, 0))
-    throw InputError("cannot read image '" + path.string() + "': " + source.geterror());
-  checkTextureSize("image '" + path.string() + "'", source.spec().width, source.spec().height);
-  if (!source.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw InputError("cannot read image '" + path.string() + "': " + source.geterror());
-  const OIIO::ImageSpec& spec = source.spec();
+  ImageReader source(path, "cannot read image '" + path.string() + "'");
+  checkTextureSize("image '" + path.string() + "'", source.header().width, source.header().height);
+  source.read(oiio::PixelType::Float);
+  const oiio::ImageHeader& spec = source.header();
   // Integer files hold sRGB-encoded display values; float files hold radiance.
-  // (spec() describes the float buffer it was read into; nativespec() the file.)
-  bool encoded = !source.nativespec().format.is_floating_point();
-  int channels = spec.nchannels;
+  bool encoded = !source.floatingPoint() && spec.stored != oiio::PixelType::Double;
+  int channels = spec.channels;
   std::vector<float> raw(size_t(spec.width) * spec.height * channels);
-  source.get_pixels(OIIO::ROI(0, spec.width, 0, spec.height, 0, 1, 0, channels),
-                    OIIO::TypeDesc::FLOAT, raw.data());
+  source.getRows(0, spec.height, oiio::PixelType::Float, raw.data());
   ImageRgba image(uint32_t(spec.width), uint32_t(spec.height));
   for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p) {
     const float* in = &raw[p * channels];

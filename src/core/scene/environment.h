@@ -91,7 +91,7 @@ glm::vec3 skyRadiance(const gpu::SkyParameters& sky, glm::vec3 direction);
 // panorama or face; what the device's cube approximates). None gives black.
 glm::vec3 environmentRadiance(const Environment& environment, glm::vec3 direction);
 
-// Reads an image file as linear RGBA with OpenImageIO: 8- and 16-bit files
+// Reads an image file as linear RGBA (ImageReader: libpng or OpenImageIO): 8- and 16-bit files
 // (JPEG, PNG) are sRGB-decoded, float files (HDR, EXR) are taken as linear.
 // Throws InputError naming the file.
 ImageRgba readLinearImage(const std::filesystem::path& path);

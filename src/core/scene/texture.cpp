@@ -1,7 +1,5 @@
 #include "core/scene/texture.h"
 
-#include <OpenImageIO/imagebuf.h>
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -9,6 +7,7 @@
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/image.h"
+#include "core/base/image_reader.h"
 
 namespace shadelab {
 
@@ -27,30 +26,25 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
   if (std::filesystem::is_directory(path, error))
     throw InputError("texture file '" + name + "' is a directory, expected an image");
   checkInputFile(path, "texture file", kMaxBinaryInputBytes);
-  OIIO::ImageBuf source(name);
+  // 8-bit PNG through libpng, other formats through the OpenImageIO module.
+  ImageReader source(path, "texture file '" + name + "' cannot be read as an image");
   // The header first: a 3.5 MB PNG may declare 16384x16384 texels.
-  if (!source.init_spec(name, 0, 0))
-    throw InputError("texture file '" + name +
-                     "' cannot be read as an image: " + source.geterror());
-  checkTextureSize(name, source.spec().width, source.spec().height);
+  checkTextureSize(name, source.header().width, source.header().height);
   // Only floating-point files hold linear light; 8- and 16-bit files hold
   // encoded values already (sRGB colour, or raw data).
-  OIIO::TypeDesc stored = source.nativespec().format;
-  bool linearLight =
-      stored.basetype == OIIO::TypeDesc::FLOAT || stored.basetype == OIIO::TypeDesc::HALF;
+  bool linearLight = source.floatingPoint();
   // Memory per texel while loading: the file's buffer (1 B per channel for
   // 8-bit files, 4 B otherwise) plus 4 B of rgba8; on the device the RGBA8
   // mip chain takes 4 * 4/3 B. 8-bit files are read as bytes: the values are
   // the same, v / 255 * 255 rounds back to v.
-  OIIO::TypeDesc readAs =
-      stored.basetype == OIIO::TypeDesc::UINT8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
-  if (!source.read(0, 0, true, readAs))
-    throw InputError("texture file '" + name +
-                     "' cannot be read as an image: " + source.geterror());
-  const OIIO::ImageSpec& spec = source.spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+  oiio::PixelType readAs = source.header().stored == oiio::PixelType::UInt8
+                               ? oiio::PixelType::UInt8
+                               : oiio::PixelType::Float;
+  source.read(readAs);
+  const oiio::ImageHeader& spec = source.header();
+  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0)
     throw InputError("texture file '" + name + "' holds no pixels");
-  int channels = spec.nchannels;
+  int channels = spec.channels;
   // Converted a row at a time (get_pixels gives bytes as v / 255), so the
   // only whole-image copies are the buffer read above and rgba8 below.
   std::vector<float> row(size_t(spec.width) * channels);
@@ -69,8 +63,7 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
     size_t x = p % texture.width;
     if (x == 0) {
       int y = int(p / texture.width);
-      source.get_pixels(OIIO::ROI(0, spec.width, y, y + 1, 0, 1, 0, channels),
-                        OIIO::TypeDesc::FLOAT, row.data());
+      source.getRows(y, y + 1, oiio::PixelType::Float, row.data());
     }
     const float* in = &row[x * channels];
     float rgba[4] = {in[0], channels >= 3 ? in[1] : in[0], channels >= 3 ? in[2] : in[0],
