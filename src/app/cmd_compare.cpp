@@ -11,6 +11,7 @@
 #include "app/camera_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/compare_columns.h"
 #include "app/json_output.h"
 #include "app/look_options.h"
 #include "core/base/errors.h"
@@ -18,9 +19,12 @@
 #include "core/base/split_screen.h"
 #include "core/metrics/metrics.h"
 #include "core/metrics/sheet.h"
+#include "core/scene/lod.h"
 #include "core/scene/scene_loader.h"
+#include "core/scene/texture.h"
 #include "core/trace/raytracer.h"
 #include "core/trace/reflection_regions.h"
+#include "core/vulkan/depth.h"
 #include "measure/reference.h"
 #include "passes/renderer.h"
 
@@ -33,6 +37,8 @@ struct CompareOptions {
   std::string output;
   std::string size = "480x270";
   std::string modes = "flat,gouraud,phong,blinn-phong";
+  std::vector<std::string> columns;            // --column specs (compare_columns.h)
+  std::string against = kReferenceColumnName;  // --against
   std::string reference = "trace";
   uint32_t samplesPerPixel = 4;
   std::string referenceShadows = "on";
@@ -53,6 +59,9 @@ ImageU8 flipLegend(uint32_t width, uint32_t height) {
       for (uint32_t x = 0; x < width; ++x) legend.set(x, y, {20, 20, 23, 255});
   return legend;
 }
+
+// tess=auto: render --tess-error's default bound, in pixels.
+constexpr float kCompareAutoTessellationErrorPixels = 0.5f;
 
 std::string fixed(double value, int digits) {
   std::ostringstream out;
@@ -87,17 +96,98 @@ void splitByRegion(const MetricMap& flip, const ReflectionRegions& regions,
                escaping);
 }
 
+// A column as drawn, and the triangles it submitted. (No time: one frame,
+// its first, is all compare draws; `bench` measures time.)
+struct DrawnColumn {
+  ImageU8 image;
+  uint64_t triangles = 0;
+};
+
+// Columns that differ in model alone are one split frame of one camera (the
+// --modes case, exactly as before columns existed); others are drawn one by
+// one at the cell's size, each with its own tessellation, MSAA, ...
+std::vector<DrawnColumn> drawColumns(Renderer& renderer, const Scene& scene,
+                                     const std::vector<CompareColumn>& columns, Size cell,
+                                     RenderSettings& settings, RenderStats& splitStats) {
+  std::vector<DrawnColumn> drawn;
+  settings = RenderSettings{};
+  static_cast<FrameSettings&>(settings) = columns.front().settings;
+  settings.shadingModel = ShadingModel::Phong;
+  settings.width = cell.width * uint32_t(columns.size());
+  settings.height = cell.height;
+  for (const CompareColumn& column : columns)
+    settings.splitModels.push_back(column.settings.shadingModel);
+  if (drawableAsOneSplitFrame(columns)) {
+    RenderResult rendered = renderer.renderToImage(scene, settings);
+    ImageU8 split = encodeSrgb8(rendered.image);
+    splitStats = rendered.stats;
+    // The split frame is exactly columns.size() cells wide: every column is one cell.
+    std::vector<ScreenColumn> cells = splitColumns(split.width, uint32_t(columns.size()));
+    for (const ScreenColumn& part : cells)
+      drawn.push_back({cropColumns(split, part.left, part.width), rendered.stats.triangles});
+    return drawn;
+  }
+  for (const CompareColumn& column : columns) {
+    RenderSettings one;
+    static_cast<FrameSettings&>(one) = column.settings;
+    one.width = cell.width;
+    one.height = cell.height;
+    RenderResult rendered;
+    if (column.autoTessellation || column.tessellation.value_or(1.0f) != 1.0f) {
+      Scene tessellated = scene;
+      if (column.autoTessellation)
+        tessellateForView(tessellated, ViewSize{scene.camera, cell.width, cell.height},
+                          kCompareAutoTessellationErrorPixels);
+      else
+        tessellated.retessellate(*column.tessellation);
+      rendered = renderer.renderToImage(tessellated, one);
+    } else {
+      rendered = renderer.renderToImage(scene, one);
+    }
+    drawn.push_back({encodeSrgb8(rendered.image), rendered.stats.triangles});
+  }
+  return drawn;
+}
+
+// Two lines under a column's picture: its settings, for a sheet read alone.
+std::vector<std::string> settingsLines(const CompareColumn& column) {
+  const FrameSettings& s = column.settings;
+  std::string tess =
+      column.autoTessellation ? "auto" : fixed(column.tessellation.value_or(1.0f), 3);
+  tess.erase(tess.find_last_not_of('0') + 1);
+  if (tess.back() == '.') tess.pop_back();
+  std::string filter =
+      s.textures.filterOverride ? textureFilterName(*s.textures.filterOverride) : "material";
+  std::string shadows(nameOf(kShadowMethodNames, s.shadows));
+  if (s.shadows != ShadowMethod::Off) shadows += " " + std::to_string(s.shadowMapSize);
+  // Short lines: a cell may be as narrow as 240 pixels (30 characters).
+  return {std::string(shadingModelName(s.shadingModel)) + "  tess " + tess + "  msaa " +
+              std::to_string(s.msaaSamples),
+          std::string(depthModeName(s.depth)) + "  env " + (s.environment ? "on" : "off") +
+              "  bump " + (s.textures.bump ? "on" : "off"),
+          "filter " + filter, "shadows " + shadows};
+}
+
 int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   Size cell = parseSize(options.size, "--size");
-  std::vector<ShadingModel> models = parseShadingModelList(options.modes, "--modes");
+  FrameSettings defaults;
+  options.shadows.apply(defaults);
+  std::vector<CompareColumn> columns =
+      options.columns.empty()
+          ? modelColumns(parseShadingModelList(options.modes, "--modes"), defaults)
+          : parseCompareColumns(options.columns, defaults);
+  std::optional<size_t> against = findAgainstColumn(columns, options.against);
+  // The sheet and JSON beside it keep their --modes form unless columns are asked for.
+  const bool columnReport = !options.columns.empty() || against;
+  if (against && columns.size() < 2)
+    throw InputError("--against '" + options.against +
+                     "': expected another column to measure against it");
   checkSamplesPerPixel(options.samplesPerPixel, "--spp");
   Reference reference = findReference(options.reference, "--reference");
   if (reference.name == "trace")
     reference =
         traceReference(options.samplesPerPixel,
                        parseNamed(kOnOffNames, options.referenceShadows, "--reference-shadows"));
-  FrameSettings shadowSettings;
-  options.shadows.apply(shadowSettings);
   std::filesystem::path sheetPath(options.output);
   if (sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
@@ -105,69 +195,102 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
   Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
-  checkTriangleBudget(scene, 4.0f, global.maxTriangles, "compare (its raster reference is 4x)",
-                      "--max-triangles");
+  float finest = 4.0f;  // the raster reference
+  for (const CompareColumn& column : columns)
+    finest = std::max(finest, column.tessellation.value_or(1.0f));
+  checkTriangleBudget(
+      scene, finest, global.maxTriangles,
+      "compare (its raster reference is 4x, a column's tess up to " + fixed(finest, 3) + "x)",
+      "--max-triangles");
   printSceneWarnings(scene, true);
 
   std::unique_ptr<Context> context = openContext(global);
-  ImageU8 split, expected;
+  std::vector<DrawnColumn> drawn;
+  ImageU8 expected;
   double referenceSeconds = 0.0;
-  RenderSettings settings{cell.width * uint32_t(models.size()), cell.height};
+  RenderSettings settings;
   RenderStats splitStats;
   {
     Renderer renderer(*context);
-    settings.splitModels = models;
-    settings.shadows = shadowSettings.shadows;
-    settings.shadowBias = shadowSettings.shadowBias;
-    settings.shadowMapSize = shadowSettings.shadowMapSize;
-    RenderResult rendered = renderer.renderToImage(scene, settings);
-    split = encodeSrgb8(rendered.image);
-    splitStats = rendered.stats;
-    const auto start = std::chrono::steady_clock::now();
-    expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
-    referenceSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    drawn = drawColumns(renderer, scene, columns, cell, settings, splitStats);
+    if (!against) {
+      const auto start = std::chrono::steady_clock::now();
+      expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
+      referenceSeconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
   }
+  const std::string baseline = against ? columns[*against].name : kReferenceColumnName;
+  if (against) expected = drawn[*against].image;
 
   const std::string& description = reference.description;
-  std::vector<SheetCell> renders{{expected, "reference", {description}}};
+  std::vector<SheetCell> renders;
+  if (against)
+    renders.push_back({expected, baseline + " (baseline)", settingsLines(columns[*against])});
+  else
+    renders.push_back({expected, "reference", {description}});
   std::vector<SheetCell> heatmaps{{flipLegend(cell.width, cell.height),
                                    "FLIP error",
                                    {"0 (left): no visible difference", "1 (right): the largest",
                                     "viewed at 67 pixels/degree"}}};
   nlohmann::json report = {{"scene", scene.name},
                            {"size", options.size},
-                           {"reference", description},
-                           {"modes", nlohmann::json::array()}};
+                           {"reference", against ? "column '" + baseline + "'" : description}};
+  report[columnReport ? "columns" : "modes"] = nlohmann::json::array();
+  if (columnReport) report["against"] = baseline;
+  nlohmann::json columnsJson = nlohmann::json::array();  // for stdout, in every form
   std::optional<ReflectionRegions> regions;
-  if (scene.environment.present() && reference.name == "trace")
+  if (scene.environment.present() && reference.name == "trace" && !against)
     regions = classifyReflections(scene, cell.width, cell.height);
   FILE* out = options.json.human();
-  std::fprintf(out, "reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
-  std::fprintf(out, "%-12s %10s %10s %8s %8s %10s\n", "mode", "RMSE", "PSNR dB", "max", "SSIM",
-               "mean FLIP");
-  // The split frame is exactly models.size() cells wide: every column is one cell.
-  std::vector<ScreenColumn> columns = splitColumns(split.width, uint32_t(models.size()));
-  for (size_t i = 0; i < models.size(); ++i) {
-    std::string name(shadingModelName(models[i]));
-    ImageU8 image = cropColumns(split, columns[i].left, columns[i].width);
+  if (against)
+    std::fprintf(out, "against: column '%s'\n", baseline.c_str());
+  else
+    std::fprintf(out, "reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
+  int nameWidth = 12;  // the names' column: as wide as the longest
+  for (const CompareColumn& column : columns)
+    nameWidth = std::max(nameWidth, int(column.name.size()));
+  std::fprintf(out, "%-*s %10s %10s %8s %8s %10s\n", nameWidth, columnReport ? "column" : "mode",
+               "RMSE", "PSNR dB", "max", "SSIM", "mean FLIP");
+  for (size_t i = 0; i < columns.size(); ++i) {
+    const CompareColumn& column = columns[i];
+    nlohmann::json columnJson = {{"name", column.name},
+                                 {"spec", column.spec},
+                                 {"settings", columnSettingsJson(column)},
+                                 {"triangles", drawn[i].triangles},
+                                 {"against", baseline}};
+    if (against && i == *against) {  // the baseline: nothing to measure
+      columnsJson.push_back(columnJson);
+      if (columnReport) report["columns"].push_back(columnJson);
+      continue;
+    }
+    const std::string& name = column.name;
+    const ImageU8& image = drawn[i].image;
     ImageDifference difference = compareImages(expected, image);
     const double ssim = structuralSimilarity(expected, image).mean;
     const MetricMap flip = flipError(expected, image);
-    renders.push_back({image, name, {}});
+    renders.push_back(
+        {image, name, columnReport ? settingsLines(column) : std::vector<std::string>{}});
     std::vector<std::string> lines{
         "RMSE " + fixed(difference.rmse, 3) + "  PSNR " + fixed(difference.psnr, 2) + " dB",
         "SSIM " + fixed(ssim, 4) + "  FLIP " + fixed(flip.mean, 4),
         "max difference " + std::to_string(difference.maxDifference) + "/255"};
-    nlohmann::json numbers = {
-        {"mode", name}, {"rmse", difference.rmse}, {"psnr", difference.psnr},
-        {"ssim", ssim}, {"flip", flip.mean},       {"maxDifference", difference.maxDifference}};
-    std::fprintf(out, "%-12s %10.3f %10.2f %8d %8.4f %10.4f", name.c_str(), difference.rmse,
-                 difference.psnr, difference.maxDifference, ssim, flip.mean);
+    nlohmann::json numbers = {{"mode", std::string(shadingModelName(column.settings.shadingModel))},
+                              {"rmse", difference.rmse},
+                              {"psnr", difference.psnr},
+                              {"ssim", ssim},
+                              {"flip", flip.mean},
+                              {"maxDifference", difference.maxDifference}};
+    std::fprintf(out, "%-*s %10.3f %10.2f %8d %8.4f %10.4f", nameWidth, name.c_str(),
+                 difference.rmse, difference.psnr, difference.maxDifference, ssim, flip.mean);
     if (regions) splitByRegion(flip, *regions, lines, numbers, out);
     std::fprintf(out, "\n");
-    heatmaps.push_back({magmaHeatmap(flip), name + " vs reference", lines});
-    report["modes"].push_back(numbers);
+    heatmaps.push_back({magmaHeatmap(flip), name + " vs " + baseline, lines});
+    nlohmann::json metrics = numbers;
+    metrics.erase("mode");
+    columnJson["metrics"] = metrics;
+    columnsJson.push_back(columnJson);
+    report[columnReport ? "columns" : "modes"].push_back(columnReport ? columnJson : numbers);
   }
   std::vector<std::vector<SheetCell>> sheet{renders, heatmaps};
   if (regions) sheet.push_back({regionCell(*regions, report)});
@@ -178,13 +301,19 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   std::fprintf(out, "wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
   // The report written beside the sheet, with what only this run knows.
   nlohmann::json json = report;
+  json["columns"] = columnsJson;
+  json["against"] = baseline;
   json["settings"] = toJson(settings);
   json["settings"]["cell_width"] = cell.width;
   json["settings"]["spp"] = options.samplesPerPixel;
-  json["timings"] = {{"reference_seconds", referenceSeconds},
-                     {"split_frame_device_ms", splitStats.deviceMs.front()}};
-  // The split frame draws the scene once per column.
-  json["triangles"] = splitStats.triangles;
+  json["timings"] = {{"reference_seconds", referenceSeconds}};
+  if (!splitStats.deviceMs.empty())
+    json["timings"]["split_frame_device_ms"] = splitStats.deviceMs.front();
+  // The split frame draws the scene once per column; columns drawn apart: their sum.
+  uint64_t triangles = splitStats.triangles;
+  if (splitStats.deviceMs.empty())
+    for (const DrawnColumn& column : drawn) triangles += column.triangles;
+  json["triangles"] = triangles;
   json["outputs"] = {{"sheet", shadelab::jsonPath(sheetPath)},
                      {"json", shadelab::jsonPath(jsonPath)}};
   options.json.emit("compare", json);
@@ -203,7 +332,21 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
       ->required();
   command->add_option("--size", options->size, "Size of each view WIDTHxHEIGHT")
       ->capture_default_str();
-  command->add_option("--modes", options->modes, "Comma-separated shading models")
+  CLI::Option* modes =
+      command->add_option("--modes", options->modes, "Comma-separated shading models")
+          ->capture_default_str();
+  command
+      ->add_option("--column", options->columns,
+                   "A column (repeat for more), instead of --modes: comma-separated key=value "
+                   "pairs, a bare word being the model: \"name=fine,phong,tess=4,msaa=4\". Keys: "
+                   "name (default: the spec), mode, tess (0.125..16, auto), msaa (1, 4), filter "
+                   "(material, nearest, bilinear, trilinear, aniso), env, bump (on, off), depth "
+                   "(d16, d24, d32f, reversed), shadows (off, hard, pcf3, pcf5), shadow-size")
+      ->excludes(modes)
+      ->allow_extra_args(false);
+  command
+      ->add_option("--against", options->against,
+                   "What every column is measured against: reference, or a column's name")
       ->capture_default_str();
   command
       ->add_option("--reference", options->reference,
