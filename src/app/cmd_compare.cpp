@@ -168,100 +168,86 @@ std::vector<std::string> settingsLines(const CompareColumn& column) {
           "filter " + filter, "shadows " + shadows};
 }
 
-int runCompare(const CompareOptions& options, const GlobalOptions& global) {
-  Size cell = parseSize(options.size, "--size");
+// What a compare run measures, checked before any device is opened.
+struct ComparePlan {
+  Size cell;
+  std::vector<CompareColumn> columns;
+  std::optional<size_t> against;  // none: the reference
+  bool columnReport = false;      // --column or --against: the JSON file lists columns
+  Reference reference;
+  std::filesystem::path sheetPath, jsonPath;
+  Scene scene;
+};
+
+ComparePlan planCompare(const CompareOptions& options, const GlobalOptions& global) {
+  ComparePlan plan;
+  plan.cell = parseSize(options.size, "--size");
   FrameSettings defaults;
   options.shadows.apply(defaults);
-  std::vector<CompareColumn> columns =
-      options.columns.empty()
-          ? modelColumns(parseShadingModelList(options.modes, "--modes"), defaults)
-          : parseCompareColumns(options.columns, defaults);
-  std::optional<size_t> against = findAgainstColumn(columns, options.against);
+  plan.columns = options.columns.empty()
+                     ? modelColumns(parseShadingModelList(options.modes, "--modes"), defaults)
+                     : parseCompareColumns(options.columns, defaults);
+  plan.against = findAgainstColumn(plan.columns, options.against);
   // The sheet and JSON beside it keep their --modes form unless columns are asked for.
-  const bool columnReport = !options.columns.empty() || against;
-  if (against && columns.size() < 2)
+  plan.columnReport = !options.columns.empty() || plan.against;
+  if (plan.against && plan.columns.size() < 2)
     throw InputError("--against '" + options.against +
                      "': expected another column to measure against it");
   checkSamplesPerPixel(options.samplesPerPixel, "--spp");
-  Reference reference = findReference(options.reference, "--reference");
-  if (reference.name == "trace")
-    reference =
+  plan.reference = findReference(options.reference, "--reference");
+  if (plan.reference.name == "trace")
+    plan.reference =
         traceReference(options.samplesPerPixel,
                        parseNamed(kOnOffNames, options.referenceShadows, "--reference-shadows"));
-  std::filesystem::path sheetPath(options.output);
-  if (sheetPath.extension() != ".png")
+  plan.sheetPath = options.output;
+  if (plan.sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
-  checkOutputPath(sheetPath);
-  std::filesystem::path jsonPath = std::filesystem::path(sheetPath).replace_extension(".json");
-  Scene scene = loadScene(options.scene, {global.maxTriangles});
-  applyCameraOptions(options.camera, float(cell.width) / float(cell.height), scene.camera);
+  checkOutputPath(plan.sheetPath);
+  plan.jsonPath = std::filesystem::path(plan.sheetPath).replace_extension(".json");
+  plan.scene = loadScene(options.scene, {global.maxTriangles});
+  applyCameraOptions(options.camera, float(plan.cell.width) / float(plan.cell.height),
+                     plan.scene.camera);
   float finest = 4.0f;  // the raster reference
-  for (const CompareColumn& column : columns)
+  for (const CompareColumn& column : plan.columns)
     finest = std::max(finest, column.tessellation.value_or(1.0f));
   checkTriangleBudget(
-      scene, finest, global.maxTriangles,
+      plan.scene, finest, global.maxTriangles,
       "compare (its raster reference is 4x, a column's tess up to " + fixed(finest, 3) + "x)",
       "--max-triangles");
-  printSceneWarnings(scene, true);
+  printSceneWarnings(plan.scene, true);
+  return plan;
+}
 
-  std::unique_ptr<Context> context = openContext(global);
-  std::vector<DrawnColumn> drawn;
-  ImageU8 expected;
-  double referenceSeconds = 0.0;
-  RenderSettings settings;
-  RenderStats splitStats;
-  {
-    Renderer renderer(*context);
-    drawn = drawColumns(renderer, scene, columns, cell, settings, splitStats);
-    if (!against) {
-      const auto start = std::chrono::steady_clock::now();
-      expected = encodeSrgb8(reference.render(renderer, scene, cell.width, cell.height));
-      referenceSeconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-  }
-  const std::string baseline = against ? columns[*against].name : kReferenceColumnName;
-  if (against) expected = drawn[*against].image;
-
-  const std::string& description = reference.description;
-  std::vector<SheetCell> renders;
-  if (against)
-    renders.push_back({expected, baseline + " (baseline)", settingsLines(columns[*against])});
-  else
-    renders.push_back({expected, "reference", {description}});
-  std::vector<SheetCell> heatmaps{{flipLegend(cell.width, cell.height),
-                                   "FLIP error",
-                                   {"0 (left): no visible difference", "1 (right): the largest",
-                                    "viewed at 67 pixels/degree"}}};
-  nlohmann::json report = {{"scene", scene.name},
-                           {"size", options.size},
-                           {"reference", against ? "column '" + baseline + "'" : description}};
-  report[columnReport ? "columns" : "modes"] = nlohmann::json::array();
-  if (columnReport) report["against"] = baseline;
+// The sheet's rows and the reports as the columns are measured.
+struct CompareSheet {
+  std::vector<SheetCell> renders, heatmaps;
+  nlohmann::json report;                                 // the .json beside the sheet
   nlohmann::json columnsJson = nlohmann::json::array();  // for stdout, in every form
-  std::optional<ReflectionRegions> regions;
-  if (scene.environment.present() && reference.name == "trace" && !against)
-    regions = classifyReflections(scene, cell.width, cell.height);
-  FILE* out = options.json.human();
-  if (against)
-    std::fprintf(out, "against: column '%s'\n", baseline.c_str());
-  else
-    std::fprintf(out, "reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
+};
+
+// Each column against `expected` (the reference or the --against column):
+// a picture and heatmap cell each, a table line, the JSON entries.
+void measureColumns(const ComparePlan& plan, const std::vector<DrawnColumn>& drawn,
+                    const ImageU8& expected, const std::string& baseline,
+                    const std::optional<ReflectionRegions>& regions, CompareSheet& sheet,
+                    FILE* out) {
   int nameWidth = 12;  // the names' column: as wide as the longest
-  for (const CompareColumn& column : columns)
+  for (const CompareColumn& column : plan.columns)
     nameWidth = std::max(nameWidth, int(column.name.size()));
-  std::fprintf(out, "%-*s %10s %10s %8s %8s %10s\n", nameWidth, columnReport ? "column" : "mode",
-               "RMSE", "PSNR dB", "max", "SSIM", "mean FLIP");
-  for (size_t i = 0; i < columns.size(); ++i) {
-    const CompareColumn& column = columns[i];
+  std::fprintf(out, "%-*s %10s %10s %8s %8s %10s\n", nameWidth,
+               plan.columnReport ? "column" : "mode", "RMSE", "PSNR dB", "max", "SSIM",
+               "mean FLIP");
+  const char* listName = plan.columnReport ? "columns" : "modes";
+  for (size_t i = 0; i < plan.columns.size(); ++i) {
+    const CompareColumn& column = plan.columns[i];
     nlohmann::json columnJson = {{"name", column.name},
                                  {"spec", column.spec},
                                  {"settings", columnSettingsJson(column)},
                                  {"triangles", drawn[i].triangles},
                                  {"against", baseline}};
-    if (against && i == *against) {  // the baseline: nothing to measure
-      columnsJson.push_back(columnJson);
-      if (columnReport) report["columns"].push_back(columnJson);
+    if (plan.against && i == *plan.against) {  // the baseline: nothing to measure
+      sheet.columnsJson.push_back(columnJson);
+      if (plan.columnReport) sheet.report[listName].push_back(columnJson);
       continue;
     }
     const std::string& name = column.name;
@@ -269,8 +255,8 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
     ImageDifference difference = compareImages(expected, image);
     const double ssim = structuralSimilarity(expected, image).mean;
     const MetricMap flip = flipError(expected, image);
-    renders.push_back(
-        {image, name, columnReport ? settingsLines(column) : std::vector<std::string>{}});
+    sheet.renders.push_back(
+        {image, name, plan.columnReport ? settingsLines(column) : std::vector<std::string>{}});
     std::vector<std::string> lines{
         "RMSE " + fixed(difference.rmse, 3) + "  PSNR " + fixed(difference.psnr, 2) + " dB",
         "SSIM " + fixed(ssim, 4) + "  FLIP " + fixed(flip.mean, 4),
@@ -285,23 +271,74 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
                  difference.rmse, difference.psnr, difference.maxDifference, ssim, flip.mean);
     if (regions) splitByRegion(flip, *regions, lines, numbers, out);
     std::fprintf(out, "\n");
-    heatmaps.push_back({magmaHeatmap(flip), name + " vs " + baseline, lines});
+    sheet.heatmaps.push_back({magmaHeatmap(flip), name + " vs " + baseline, lines});
     nlohmann::json metrics = numbers;
     metrics.erase("mode");
     columnJson["metrics"] = metrics;
-    columnsJson.push_back(columnJson);
-    report[columnReport ? "columns" : "modes"].push_back(columnReport ? columnJson : numbers);
+    sheet.columnsJson.push_back(columnJson);
+    sheet.report[listName].push_back(plan.columnReport ? columnJson : numbers);
   }
-  std::vector<std::vector<SheetCell>> sheet{renders, heatmaps};
-  if (regions) sheet.push_back({regionCell(*regions, report)});
+}
+
+int runCompare(const CompareOptions& options, const GlobalOptions& global) {
+  const ComparePlan plan = planCompare(options, global);
+  const Size cell = plan.cell;
+  const std::optional<size_t> against = plan.against;
+  std::unique_ptr<Context> context = openContext(global);
+  std::vector<DrawnColumn> drawn;
+  ImageU8 expected;
+  double referenceSeconds = 0.0;
+  RenderSettings settings;
+  RenderStats splitStats;
+  {
+    Renderer renderer(*context);
+    drawn = drawColumns(renderer, plan.scene, plan.columns, cell, settings, splitStats);
+    if (!against) {
+      const auto start = std::chrono::steady_clock::now();
+      expected = encodeSrgb8(plan.reference.render(renderer, plan.scene, cell.width, cell.height));
+      referenceSeconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  }
+  const std::string baseline = against ? plan.columns[*against].name : kReferenceColumnName;
+  if (against) expected = drawn[*against].image;
+
+  const std::string& description = plan.reference.description;
+  CompareSheet sheet;
+  if (against)
+    sheet.renders.push_back(
+        {expected, baseline + " (baseline)", settingsLines(plan.columns[*against])});
+  else
+    sheet.renders.push_back({expected, "reference", {description}});
+  sheet.heatmaps.push_back({flipLegend(cell.width, cell.height),
+                            "FLIP error",
+                            {"0 (left): no visible difference", "1 (right): the largest",
+                             "viewed at 67 pixels/degree"}});
+  sheet.report = {{"scene", plan.scene.name},
+                  {"size", options.size},
+                  {"reference", against ? "column '" + baseline + "'" : description}};
+  sheet.report[plan.columnReport ? "columns" : "modes"] = nlohmann::json::array();
+  if (plan.columnReport) sheet.report["against"] = baseline;
+  std::optional<ReflectionRegions> regions;
+  if (plan.scene.environment.present() && plan.reference.name == "trace" && !against)
+    regions = classifyReflections(plan.scene, cell.width, cell.height);
+  FILE* out = options.json.human();
+  if (against)
+    std::fprintf(out, "against: column '%s'\n", baseline.c_str());
+  else
+    std::fprintf(out, "reference: %s, %.2f s\n", description.c_str(), referenceSeconds);
+  measureColumns(plan, drawn, expected, baseline, regions, sheet, out);
+  std::vector<std::vector<SheetCell>> rows{sheet.renders, sheet.heatmaps};
+  if (regions) rows.push_back({regionCell(*regions, sheet.report)});
+  const std::filesystem::path &sheetPath = plan.sheetPath, &jsonPath = plan.jsonPath;
   OutputGroup outputs;
-  outputs.add(sheetPath, [&] { writeImage(composeSheet(sheet), sheetPath); });
-  outputs.add(jsonPath, [&] { writeTextFile(jsonPath, report.dump(2) + "\n"); });
+  outputs.add(sheetPath, [&] { writeImage(composeSheet(rows), sheetPath); });
+  outputs.add(jsonPath, [&] { writeTextFile(jsonPath, sheet.report.dump(2) + "\n"); });
   outputs.keep();
   std::fprintf(out, "wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
   // The report written beside the sheet, with what only this run knows.
-  nlohmann::json json = report;
-  json["columns"] = columnsJson;
+  nlohmann::json json = sheet.report;
+  json["columns"] = sheet.columnsJson;
   json["against"] = baseline;
   json["settings"] = toJson(settings);
   json["settings"]["cell_width"] = cell.width;
