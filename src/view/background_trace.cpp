@@ -35,7 +35,7 @@ void BackgroundTrace::start(Scene scene, uint32_t width, uint32_t height,
   state_ = State::Tracing;
   error_.clear();
   // One core is the viewer's (and lavapipe's): the trace takes the others, at least one.
-  uint32_t threads = std::max(1u, std::thread::hardware_concurrency() - 1);
+  uint32_t threads = std::max(2u, std::thread::hardware_concurrency()) - 1;  // 0: unknown
   worker_ = std::thread([this, scene = std::move(scene), width, height, samplesPerPixel, threads] {
     const auto started = std::chrono::steady_clock::now();
     try {
