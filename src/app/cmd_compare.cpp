@@ -1,6 +1,8 @@
 // shadelab compare: the shading models side by side in viewports of one
-// frame (one camera), each with a heatmap of its difference from a reference
-// and its error numbers; the numbers also go to a JSON file beside the sheet.
+// frame (one camera), or columns of any settings (compare_columns.h) drawn
+// one by one, each with a heatmap of its difference from a reference (or a
+// column) and its error numbers; the numbers also go to a JSON file beside
+// the sheet.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -362,7 +364,9 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
 CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
   auto options = std::make_shared<CompareOptions>();
   CLI::App* command = app.add_subcommand(
-      "compare", "Shading models side by side with heatmaps and errors against a reference");
+      "compare",
+      "Shading models (or any settings, --column) side by side with heatmaps and errors against "
+      "a reference or a column");
   command->add_option("scene", options->scene, "Built-in scene name or scene file");
   addCameraOptions(command, options->camera);
   command->add_option("-o,--output", options->output, "Sheet image (.png); numbers go to .json")
