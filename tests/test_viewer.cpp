@@ -177,7 +177,7 @@ TEST_F(Viewer, SplitScreenMatchesHeadlessSplitAndReportsErrors) {
 // reference would match the first compare instead).
 TEST_F(Viewer, SplitScreenReferenceMatchesCompareForTheSameView) {
   CommandResult r =
-      view("key X\nwait-reference\nkey V\ndrag 100 100 150 80\nwait-reference\nkey V\nquit\n",
+      view("key X\nwait-reference\nkey V\ndrag 100 100 150 80\nwait-reference\nkey V\nframes 1\n",
            "--shadows hard");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   // "flat FLIP 0.1094 RMSE 19.908 ..." per model, per reference traced.

@@ -135,10 +135,10 @@ void Viewer::run() {
     if (framesToRun_ > 0 && (presented || minimized_)) --framesToRun_;
     if (waitingForReference_) waitForReference();
   }
-  reference_.cancel();
   RenderStats stats;
   renderer_.finishFrames(stats);
   for (SlotWork& work : slotWork_) finishSlotWork(work);
+  reference_.cancel();
   std::vector<double> device(deviceMs_.begin(), deviceMs_.end());
   std::vector<double> frameDevice(frameDeviceMs_.begin(), frameDeviceMs_.end());
   std::vector<double> wall(wallMs_.begin(), wallMs_.end());
