@@ -819,6 +819,30 @@ TEST_F(Cli, StudyShadowGrazingKeepsTheDefaultBiasFreeOfAcne) {
   expectDrawnChart(out("sg/shadow_grazing.png"));
 }
 
+TEST_F(Cli, StudyShadowNearKeepsCastersBeforeTheNearPlane) {
+  CommandResult r = run("study shadow-near -o " + out("sn") + " --size 160x90");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("sn/shadow_near.csv")));
+  ASSERT_EQ(rows.size(), 1u + 2 * 8) << "header + 2 depth-clamp settings x 8 distances";
+  EXPECT_EQ(rows[0][3], "depth_clamp");
+  EXPECT_EQ(rows[0][6], "leak_percent");
+  std::map<std::string, double> leak;  // "on|off distance" -> truly shadowed drawn lit, percent
+  for (size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_GT(std::stoul(rows[i][4]), 10u) << "each distance has shadowed pixels to count";
+    leak[rows[i][3] + " " + rows[i][0]] = std::stod(rows[i][6]);
+  }
+  for (const char* distance : {"0.3", "0.15", "0.1", "0.08", "0.065", "0.05", "0.04", "0.03"})
+    EXPECT_LT(leak.at(std::string("on ") + distance), 1.0)
+        << "with depth clamp the card casts at " << distance;
+  // Without the clamp the failure the study is about shows where the card
+  // crosses the near plane (0.05), and not before.
+  EXPECT_LT(leak.at("off 0.1"), 1.0);
+  EXPECT_GT(leak.at("off 0.04"), 50.0);
+  EXPECT_GT(leak.at("off 0.03"), 90.0);
+  expectDrawnChart(out("sn/shadow_near.png"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(out("sn/shadow_near_renders.png")));
+}
+
 TEST_F(Cli, StudyShadowEdgesMeasuresErrorAgainstMapSize) {
   CommandResult r = run("study shadow-edges -o " + out("se") + " --size 160x90");
   ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -837,7 +861,8 @@ TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace",
-                           "bump-silhouette", "shadow-bias", "shadow-edges"})
+                           "bump-silhouette", "shadow-bias", "shadow-edges", "shadow-grazing",
+                           "shadow-near"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 

@@ -78,7 +78,7 @@ ShadowTruth traceShadowTruth(const Scene& scene, uint32_t lightIndex, uint32_t w
 
 ShadowErrors measureShadowErrors(Renderer& renderer, const Scene& scene, uint32_t light,
                                  const ShadowTruth& truth, ShadowMethod method,
-                                 const ShadowBias& bias, uint32_t mapSize) {
+                                 const ShadowBias& bias, uint32_t mapSize, bool depthClamp) {
   Scene reduced = withOneLight(scene, light);
   RenderSettings settings{truth.width, truth.height, ShadingModel::Phong};
   settings.environment = false;
@@ -86,13 +86,19 @@ ShadowErrors measureShadowErrors(Renderer& renderer, const Scene& scene, uint32_
   settings.shadows = method;
   settings.shadowBias = bias;
   settings.shadowMapSize = mapSize;
+  settings.shadowDepthClamp = depthClamp;
   ImageRgba shadowed = renderer.renderToImage(reduced, settings).image;
   ShadowErrors errors;
   for (size_t p = 0; p < truth.pixels.size(); ++p) {
     Pixel pixel = truth.pixels[p];
     float direct = luminance(unshadowed, p);
-    if (pixel == Pixel::Ignored || pixel == Pixel::Shadowed || direct <= 1e-4f) continue;
+    if (pixel == Pixel::Ignored || direct <= 1e-4f) continue;
     bool drawnShadowed = luminance(shadowed, p) < 0.5f * direct;
+    if (pixel != Pixel::Lit) {
+      ++errors.shadowed;
+      errors.leaked += drawnShadowed ? 0 : 1;
+    }
+    if (pixel == Pixel::Shadowed) continue;
     if (pixel == Pixel::Lit) {
       ++errors.lit;
       errors.acne += drawnShadowed ? 1 : 0;

@@ -36,18 +36,22 @@ ShadowTruth traceShadowTruth(const Scene& scene, uint32_t light, uint32_t width,
 struct ShadowErrors {
   uint64_t lit = 0, acne = 0;              // truly lit pixels; of them drawn shadowed
   uint64_t contact = 0, peterPanning = 0;  // truly shadowed near contact; of them drawn lit
+  uint64_t shadowed = 0, leaked = 0;       // truly shadowed (any distance); of them drawn lit
   double acneFraction() const { return lit ? double(acne) / double(lit) : 0.0; }
   double peterPanningFraction() const {
     return contact ? double(peterPanning) / double(contact) : 0.0;
   }
+  double leakFraction() const { return shadowed ? double(leaked) / double(shadowed) : 0.0; }
 };
 
 // `scene` reduced to its light `light` with no ambient light, rendered
 // (Phong) with and without shadows: k_shadow per pixel is their ratio, and a
-// pixel counts as drawn shadowed where it is below 0.5.
+// pixel counts as drawn shadowed where it is below 0.5. `depthClamp` off
+// clips casters nearer than a map's near plane (study shadow-near).
 ShadowErrors measureShadowErrors(Renderer& renderer, const Scene& scene, uint32_t light,
                                  const ShadowTruth& truth, ShadowMethod method,
-                                 const ShadowBias& bias, uint32_t mapSize);
+                                 const ShadowBias& bias, uint32_t mapSize,
+                                 bool depthClamp = true);
 
 // One point of the bias study.
 struct BiasStudyRow {

@@ -14,6 +14,7 @@ StudyResult runBumpSilhouetteStudy(const StudyOptions& options, const StudyServi
 StudyResult runShadowBiasStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runShadowEdgesStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runShadowGrazingStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runShadowNearStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -51,6 +52,10 @@ const std::vector<Study>& studies() {
        "the sun lowered to a grazing angle: acne and peter-panning with no bias and the default "
        "one, hard and pcf3, against the tracer's exact shadow rays",
        320, 180, runShadowGrazingStudy},
+      {"shadow-near",
+       "a caster crossing the point light's near plane: truly shadowed pixels drawn lit with the "
+       "shadow pass's depth clamp and without it, against the tracer's exact shadow rays",
+       320, 180, runShadowNearStudy},
   };
   return table;
 }

@@ -406,7 +406,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& 
   for (const Object& object : source.objects) transforms.push_back(object.transform);
   stats.shadowDraws = shadow_.record(cmd, scene, uploadCount_, transforms, shadows.worldToLightClip,
                                      textures_.materialSets(settings_.textures.filterOverride),
-                                     settings_.keepShadowMaps);
+                                     settings_.keepShadowMaps, settings_.shadowDepthClamp);
 }
 
 void Renderer::recordReadback(const Buffer& readback) {

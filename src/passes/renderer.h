@@ -65,6 +65,10 @@ struct FrameSettings {
   // it was drawn (ShadowPass says how); off redraws every layer every frame,
   // to time the maps themselves. Images are the same either way.
   bool keepShadowMaps = true;
+  // Casters nearer than a light view's near plane are flattened onto it
+  // (depth clamp); off clips them as any other pass would. Only study
+  // shadow-near turns it off, to measure what the clamp saves.
+  bool shadowDepthClamp = true;
 };
 
 // renderToImage: one scene, uploaded once, drawn `frames` times.

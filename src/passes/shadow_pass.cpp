@@ -38,47 +38,6 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
   layout_ = PipelineLayout(device, layout);
   vertex_ = loadShader(device, "shadow_depth.vert");
 
-  VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stage.module = vertex_;
-  stage.pName = "main";
-  VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  VkVertexInputAttributeDescription position{0, 0, VK_FORMAT_R32G32B32_SFLOAT,
-                                             offsetof(Vertex, position)};
-  VkPipelineVertexInputStateCreateInfo vertexInput{
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertexInput.vertexBindingDescriptionCount = 1;
-  vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = 1;
-  vertexInput.pVertexAttributeDescriptions = &position;
-  VkPipelineRasterizationStateCreateInfo raster{
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  // Both faces: an open surface (a plane) casts from either side.
-  raster.cullMode = VK_CULL_MODE_NONE;
-  raster.lineWidth = 1.0f;
-  // A caster between the light and its near plane is flattened onto the
-  // plane instead of clipped away ("pancaking"), so it still casts.
-  raster.depthClampEnable = context.features().depthClamp;
-  VkPipelineMultisampleStateCreateInfo multisample{
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineDepthStencilStateCreateInfo depth{
-      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
-  // No colour attachment: the rendering scope's one slot stays empty.
-  pipeline_ = createGraphicsPipeline(device, {{&stage, 1},
-                                              &vertexInput,
-                                              &raster,
-                                              &multisample,
-                                              &depth,
-                                              {},
-                                              VK_FORMAT_UNDEFINED,
-                                              kDepthFormat,
-                                              layout_});
-
   // alphaMode MASK casters: the same state with the uv and a fragment stage.
   VkPushConstantRange maskedPush{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                  sizeof(MaskedShadowDraw)};
@@ -91,24 +50,9 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
   maskedLayout_ = PipelineLayout(device, layout);
   maskedVertex_ = loadShader(device, "shadow_depth_masked.vert");
   maskedFragment_ = loadShader(device, "shadow_depth_masked.frag");
-  VkPipelineShaderStageCreateInfo maskedStages[2] = {stage, stage};
-  maskedStages[0].module = maskedVertex_;
-  maskedStages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  maskedStages[1].module = maskedFragment_;
-  VkVertexInputAttributeDescription maskedAttributes[] = {
-      position, {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
-  VkPipelineVertexInputStateCreateInfo maskedInput = vertexInput;
-  maskedInput.vertexAttributeDescriptionCount = 2;
-  maskedInput.pVertexAttributeDescriptions = maskedAttributes;
-  maskedPipeline_ = createGraphicsPipeline(device, {{maskedStages, 2},
-                                                    &maskedInput,
-                                                    &raster,
-                                                    &multisample,
-                                                    &depth,
-                                                    {},
-                                                    VK_FORMAT_UNDEFINED,
-                                                    kDepthFormat,
-                                                    maskedLayout_});
+  // The usual pipelines now; the ones without depth clamp (a study's) when asked.
+  pipelines_[0][1] = createDepthPipeline(false, true);
+  pipelines_[1][1] = createDepthPipeline(true, true);
 
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   // One tap per texture() call: the filters are taps in the shader (PCF).
@@ -134,6 +78,62 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
     imageBarrier(cmd, placeholder_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::Undefined,
                  ImageUse::ShaderRead);
   });
+}
+
+Pipeline ShadowPass::createDepthPipeline(bool masked, bool depthClamp) const {
+  VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = masked ? maskedVertex_.get() : vertex_.get();
+  stages[0].pName = "main";
+  stages[1] = stages[0];
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = maskedFragment_;
+  VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  // Masked casters also read the uv.
+  VkVertexInputAttributeDescription attributes[] = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+      {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+  VkPipelineVertexInputStateCreateInfo vertexInput{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  vertexInput.vertexBindingDescriptionCount = 1;
+  vertexInput.pVertexBindingDescriptions = &binding;
+  vertexInput.vertexAttributeDescriptionCount = masked ? 2 : 1;
+  vertexInput.pVertexAttributeDescriptions = attributes;
+  VkPipelineRasterizationStateCreateInfo raster{
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  // Both faces: an open surface (a plane) casts from either side.
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.lineWidth = 1.0f;
+  // A caster between the light and its near plane is flattened onto the
+  // plane instead of clipped away ("pancaking"), so it still casts
+  // (study shadow-near measures what clipping would lose).
+  raster.depthClampEnable = depthClamp && context_.features().depthClamp;
+  VkPipelineMultisampleStateCreateInfo multisample{
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{
+      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = VK_TRUE;
+  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  // No colour attachment: the rendering scope's one slot stays empty.
+  return createGraphicsPipeline(context_.device(), {{stages, masked ? 2u : 1u},
+                                                    &vertexInput,
+                                                    &raster,
+                                                    &multisample,
+                                                    &depth,
+                                                    {},
+                                                    VK_FORMAT_UNDEFINED,
+                                                    kDepthFormat,
+                                                    masked ? maskedLayout_.get() : layout_.get()});
+}
+
+VkPipeline ShadowPass::pipeline(bool masked, bool depthClamp) {
+  Pipeline& slot = pipelines_[masked ? 1 : 0][depthClamp ? 1 : 0];
+  if (!slot) slot = createDepthPipeline(masked, depthClamp);
+  return slot;
 }
 
 bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
@@ -170,24 +170,30 @@ bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
 uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
                             std::span<const glm::mat4> objectTransforms,
                             std::span<const glm::mat4> worldToLightClip,
-                            std::span<const VkDescriptorSet> materialSets, bool keep) {
+                            std::span<const VkDescriptorSet> materialSets, bool keep,
+                            bool depthClamp) {
   assert(map_ && worldToLightClip.size() <= layerViews_.size());
   if (sceneUpload != drawnUpload_) {
     drawnFrom_.assign(drawnFrom_.size(), {});
     drawnUpload_ = sceneUpload;
   }
-  // Each layer's casters (culled against its frustum; the near plane stays:
-  // depth clamp keeps what lies before it) and what the layer is drawn from.
+  // Each layer's casters, culled against its frustum, and what the layer is
+  // drawn from. With depth clamp a caster wholly before the near plane still
+  // casts (flattened onto it), so only the side and far planes cull then; the
+  // side planes alone already cull what lies behind the light.
   std::vector<std::vector<const DrawItem*>> casters(worldToLightClip.size());
   std::vector<size_t> toDraw;
+  bool clamped = depthClamp && context_.features().depthClamp;
   for (size_t layer = 0; layer < worldToLightClip.size(); ++layer) {
     Frustum frustum = frustumFromMatrix(worldToLightClip[layer]);
+    if (clamped) frustum.planes[4] = Plane{glm::vec3(0.0f), 1.0f};  // near: everything inside
     std::vector<uint32_t> from;
     auto add = [&](const glm::mat4& matrix) {
       for (int i = 0; i < 16; ++i)
         from.push_back(std::bit_cast<uint32_t>(glm::value_ptr(matrix)[i]));
     };
     add(worldToLightClip[layer]);
+    from.push_back(depthClamp ? 1 : 0);
     for (const DrawItem& draw : scene.draws) {
       if (!draw.castsShadows || draw.hidden || !boxIntersectsFrustum(draw.worldBounds, frustum))
         continue;
@@ -231,7 +237,7 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t
     VkRect2D scissor{{0, 0}, {size, size}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline(false, depthClamp));
     VkDeviceSize offset = 0;
     VkBuffer vertexBuffer = scene.vertices.get();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
@@ -244,7 +250,7 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t
       bool masked = isMaskedCaster(draw);
       if (masked != maskedBound) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                          masked ? maskedPipeline_.get() : pipeline_.get());
+                          pipeline(masked, depthClamp));
         maskedBound = masked;
       }
       if (masked) {

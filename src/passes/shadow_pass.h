@@ -39,11 +39,14 @@ class ShadowPass {
   // DrawItem::material; `sceneUpload` tells uploads apart
   // (Renderer::uploadCount). With `keep`, layers whose inputs are unchanged
   // since their last draw are left as they are. Returns the caster draws
-  // recorded (after culling).
+  // recorded (after culling). Without `depthClamp` a caster nearer than a
+  // view's near plane is clipped away as in any other pass (only to measure
+  // what clamping saves: study shadow-near).
   uint32_t record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
                   std::span<const glm::mat4> objectTransforms,
                   std::span<const glm::mat4> worldToLightClip,
-                  std::span<const VkDescriptorSet> materialSets, bool keep);
+                  std::span<const VkDescriptorSet> materialSets, bool keep,
+                  bool depthClamp = true);
 
   // The array (or a 1x1 placeholder before prepare) and its compare sampler.
   VkImageView view() const { return map_ ? map_.view() : placeholder_.view(); }
@@ -51,13 +54,15 @@ class ShadowPass {
   uint32_t size() const { return map_ ? map_.desc().width : 1; }
 
  private:
+  Pipeline createDepthPipeline(bool masked, bool depthClamp) const;
+  VkPipeline pipeline(bool masked, bool depthClamp);  // created on first use
+
   const Context& context_;
   PipelineLayout layout_;
   ShaderModule vertex_;
-  Pipeline pipeline_;
   PipelineLayout maskedLayout_;  // set 0: a material's textures; push: ShadowDraw with its uv
   ShaderModule maskedVertex_, maskedFragment_;
-  Pipeline maskedPipeline_;
+  Pipeline pipelines_[2][2];  // [masked][depth clamp]
   Sampler sampler_;
   Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
   Image map_;

@@ -65,7 +65,7 @@ ShadowView pointShadowView(const Light& light, const Bounds& scene, uint32_t map
   float far = 0.0f;
   for (glm::vec3 corner : corners(scene)) far = std::max(far, glm::length(corner - light.position));
   far = std::max(far * 1.01f, 1.0f);
-  float near = std::min(0.05f, 0.1f * far);
+  float near = std::min(kPointShadowNear, 0.1f * far);
   // tan(half angle) = 1 plus the margin in the face's units (2 / mapSize per texel).
   float halfTangent = 1.0f + 2.0f * marginTexels / float(mapSize);
   glm::mat4 projection = perspective(2.0f * std::atan(halfTangent), 1.0f, near, far);

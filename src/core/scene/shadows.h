@@ -70,6 +70,9 @@ struct ShadowView {
 ShadowView directionalShadowView(const Light& light, const Bounds& sceneBounds,
                                  const glm::mat4& cameraViewProjection, uint32_t mapSize);
 
+// A point light's cube faces start this far from the light (or at a tenth
+// of the far distance, if nearer): casters closer are flattened onto it.
+inline constexpr float kPointShadowNear = 0.05f;
 // Point light: six 90-degree perspective faces, widened by `marginTexels` on
 // each side so filter taps near a face's edge stay inside the face; far plane
 // at the farthest corner of the scene's bounds.
