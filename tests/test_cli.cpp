@@ -460,10 +460,14 @@ TEST_F(Cli, CompareSplitsEnvironmentMappingErrorByReflectionRegion) {
       << r.output;
 }
 
+// compare's columns in a suite of their own: ctest runs it beside Cli, whose
+// one process is already long on a loaded 2-core machine.
+class CompareColumns : public Cli {};
+
 // --column with --against: a column drawn with the baseline's very settings
 // measures zero (drawing is deterministic), and the comparison is not blind:
 // a coarser column of the same model measures clearly above it.
-TEST_F(Cli, CompareColumnsMeasureAgainstANamedColumn) {
+TEST_F(CompareColumns, MeasureAgainstANamedColumn) {
   CommandResult r =
       run("compare -o " + out("sheet.png") +
           " --size 96x54 --column name=base,phong,tess=2,msaa=4"
@@ -489,7 +493,7 @@ TEST_F(Cli, CompareColumnsMeasureAgainstANamedColumn) {
 // against the trace as the same column of a --modes split frame does (one
 // camera, one projection; the shadow map's fit to the frame may move a
 // texel, hence a tolerance of 1e-4 in FLIP, 0.05 in RMSE).
-TEST_F(Cli, CompareColumnDrawnAloneMeasuresAsInTheSplitFrame) {
+TEST_F(CompareColumns, DrawnAloneMeasuresAsInTheSplitFrame) {
   CommandResult split =
       run("compare -o " + out("split.png") + " --size 96x54 --spp 1 --modes flat,phong");
   ASSERT_EQ(split.exitCode, 0) << split.output;
