@@ -10,6 +10,8 @@
 #include "core/metrics/error_metric.h"
 #include "core/metrics/pareto.h"
 #include "core/vulkan/depth.h"
+#include "core/scene/gltf_loader.h"
+#include "core/scene/scene_loader.h"
 #include "measure/benchmark.h"
 #include "measure/quality.h"
 
@@ -97,10 +99,13 @@ TEST(BenchCsv, ParsesColumnsAndRowsAndRejectsRaggedLines) {
 }
 
 TEST(BenchCsv, WritesOneRowPerResultWithEveryMetric) {
-  BenchOptions options{64, 36, 4, 1, {"raster", "", {}}, errorMetrics()};
+  BenchOptions options{4, 1, {"raster", "", {}}, errorMetrics()};
   BenchResult result;
   result.point = {ShadingModel::Gouraud, 2.0f, 4};
+  result.point.width = 64;
+  result.point.height = 36;
   result.triangles = 80;
+  result.lights = 3;
   result.errors = {1.5, 44.6};
   BenchTable table = parseBenchCsv(benchCsv({result}, options, "spheres"), "out");
   ASSERT_EQ(table.rows.size(), 1u);
@@ -111,6 +116,41 @@ TEST(BenchCsv, WritesOneRowPerResultWithEveryMetric) {
   EXPECT_EQ(row[table.column("rmse", "out")], "1.5");
   EXPECT_EQ(row[table.column("psnr", "out")], "44.6");
   EXPECT_EQ(row[table.column("reference", "out")], "raster");
+  EXPECT_EQ(row[table.column("width", "out")], "64");
+  EXPECT_EQ(row[table.column("height", "out")], "36");
+  EXPECT_EQ(row[table.column("lights", "out")], "3");
+  EXPECT_EQ(table.columns.back(), "lights") << "a later column goes last";
+}
+
+TEST(BenchAxes, SizesAndLightsAreAxesWithModelsVaryingFastest) {
+  BenchAxes axes;
+  axes.models = {ShadingModel::Unlit, ShadingModel::Phong};
+  axes.sizes = {{320, 180}, {640, 360}};
+  axes.lights = {1, 8};
+  std::vector<BenchPoint> points = benchPoints(axes);
+  ASSERT_EQ(points.size(), 8u);
+  EXPECT_EQ(points[0].model, ShadingModel::Unlit);
+  EXPECT_EQ(points[1].model, ShadingModel::Phong);
+  EXPECT_EQ(points[1].lights, 1u);
+  EXPECT_EQ(points[2].lights, 8u);
+  EXPECT_EQ(points[3].width, 320u);
+  EXPECT_EQ(points[4].width, 640u);
+  EXPECT_EQ(points[7].height, 360u);
+  EXPECT_EQ(benchPointName(points[2]), "unlit t1 1x 8 lights");
+}
+
+TEST(BenchAxes, LightRingReplacesTheLightsWithEqualShares) {
+  Scene scene = builtinScene("default");
+  Scene lit = withLightRing(scene, 5);
+  ASSERT_EQ(lit.lights.size(), 5u);
+  Bounds bounds = sceneBounds(scene);
+  for (const Light& light : lit.lights) {
+    EXPECT_EQ(light.type, LightType::Point);
+    EXPECT_FLOAT_EQ(light.intensity.x, 0.2f);
+    EXPECT_GT(light.position.y, bounds.max.y) << "above the scene";
+  }
+  EXPECT_NE(lit.lights[0].position, lit.lights[1].position);
+  EXPECT_EQ(lit.objects.size(), scene.objects.size());
 }
 
 std::vector<QualityCandidate> candidates() {

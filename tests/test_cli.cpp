@@ -891,7 +891,8 @@ const std::vector<std::string> kBenchColumns = {"scene",         "width",
                                                 "wall_p95_ms",   "device_memory_mb",
                                                 "peak_rss_mb",   "reference",
                                                 "rmse",          "psnr",
-                                                "ssim",          "flip"};
+                                                "ssim",          "flip",
+                                                "lights"};
 
 TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   CommandResult r = run("bench default -o " + out("b") +
@@ -953,8 +954,9 @@ TEST_F(Cli, BenchSweepsShadowMethodsAndMapSizes) {
   EXPECT_EQ(rows[2][8], "256");
   EXPECT_EQ(rows[5][7], "pcf3");
   EXPECT_EQ(rows[5][8], "1024");
-  size_t flip = rows[0].size() - 1;
+  size_t flip = rows[0].size() - 2;
   ASSERT_EQ(rows[0][flip], "flip");
+  ASSERT_EQ(rows[0].back(), "lights");
   for (size_t i = 2; i < rows.size(); ++i)
     EXPECT_LT(std::stod(rows[i][flip]), std::stod(rows[1][flip])) << rows[i][7] << rows[i][8];
   CommandResult bad = run("bench -o " + out("t") + " --shadows soft");
@@ -964,6 +966,81 @@ TEST_F(Cli, BenchSweepsShadowMethodsAndMapSizes) {
   EXPECT_EQ(bad.exitCode, 2) << bad.output;
   EXPECT_NE(bad.output.find("--shadow-sizes 0"), std::string::npos) << bad.output;
   EXPECT_FALSE(std::filesystem::exists(out("t")));
+}
+
+// Frame size and light count are axes too (issue 18's scaling charts): one
+// row per size x count x model, the lights column counts the ring's lights,
+// --reference none times without tracing, and scaling.png has a panel per
+// axis that varies. More pixels and more lights cost more for Phong.
+TEST_F(Cli, BenchSweepsFrameSizesAndLightCounts) {
+  CommandResult r = run("bench default -o " + out("sl") +
+                        " --size 64x36,256x144 --lights 1,8 --frames 4 --rounds 1 "
+                        "--modes unlit,phong --tess 1 --msaa 1 --reference none");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("sl/results.csv")));
+  ASSERT_EQ(rows.size(), 1u + 2 * 2 * 2) << "header + sizes x light counts x models";
+  ASSERT_EQ(rows[0].back(), "lights");
+  std::map<std::string, double> phong;  // "width lights" -> device median ms
+  for (size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i][17], "none");
+    EXPECT_EQ(rows[i][18], "") << "no error measured";
+    if (rows[i][3] == "phong") phong[rows[i][1] + " " + rows[i].back()] = std::stod(rows[i][11]);
+  }
+  EXPECT_EQ(rows[1][1], "64");
+  EXPECT_EQ(rows[1][2], "36");
+  EXPECT_EQ(rows[8][1], "256");
+  EXPECT_EQ(rows[8].back(), "8");
+  ASSERT_EQ(phong.size(), 4u);
+  EXPECT_GT(phong.at("256 1"), phong.at("64 1")) << "16x the pixels";
+  EXPECT_GT(phong.at("256 8"), phong.at("256 1")) << "8 lights against 1";
+  EXPECT_EQ(pngSize(out("sl/scaling.png")), std::make_pair(1040u, 420u)) << "two panels";
+  expectDrawnChart(out("sl/scaling.png"));
+  for (const char* bad : {"--lights 9", "--lights 0", "--lights two", "--size 64x36,0x5"}) {
+    CommandResult refused = run("bench default -o " + out("bad") + " " + bad);
+    EXPECT_EQ(refused.exitCode, 2) << bad << "\n" << refused.output;
+    EXPECT_NE(refused.output.find(std::string(bad).substr(0, 7)), std::string::npos)
+        << refused.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out("bad")));
+}
+
+// Progress with an ETA is drawn on a terminal only (issue 18): through a
+// pipe (as every other test runs) trace and bench print their summary
+// alone; under a pseudo-terminal (util-linux's `script`) the same commands
+// redraw a progress line that ends at 100% with an ETA.
+TEST_F(Cli, ProgressAndEtaShowOnATerminalOnly) {
+  const std::string trace = "trace default -o " + out("p.png") + " --size 160x90 --spp 1";
+  const std::string bench = "bench default -o " + out("pb") +
+                            " --size 32x18 --frames 2 --rounds 2 --modes unlit,phong --tess 1 "
+                            "--msaa 1 --reference none";
+  for (const std::string& arguments : {trace, bench}) {
+    CommandResult piped = run(arguments);
+    ASSERT_EQ(piped.exitCode, 0) << piped.output;
+    EXPECT_EQ(piped.output.find("ETA"), std::string::npos) << piped.output;
+    EXPECT_EQ(piped.output.find('\r'), std::string::npos) << piped.output;
+    EXPECT_EQ(piped.output.find("round 1/2"), std::string::npos) << piped.output;
+  }
+  auto onTerminal = [](const std::string& arguments) {
+    std::string command = "script -qec '" + std::string(SHADELAB_BINARY) + " " + arguments +
+                          "' /dev/null 2>&1";
+    CommandResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    char buffer[4096];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+    int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+  };
+  CommandResult traced = onTerminal(trace);
+  ASSERT_EQ(traced.exitCode, 0) << traced.output;
+  EXPECT_NE(traced.output.find("tracing: 100%"), std::string::npos) << traced.output;
+  EXPECT_NE(traced.output.find("ETA"), std::string::npos) << traced.output;
+  CommandResult benched = onTerminal(bench);
+  ASSERT_EQ(benched.exitCode, 0) << benched.output;
+  EXPECT_NE(benched.output.find("bench: 4/4, 100%"), std::string::npos) << benched.output;
+  EXPECT_NE(benched.output.find("ETA"), std::string::npos) << benched.output;
 }
 
 // With bench results given, the loosest bound picks the row the CSV says is cheapest.

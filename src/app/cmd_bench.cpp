@@ -14,10 +14,12 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/json_output.h"
+#include "app/progress.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/texture.h"
+#include "interface.h"
 #include "measure/bench_charts.h"
 #include "measure/benchmark.h"
 
@@ -36,6 +38,7 @@ struct BenchCommandOptions {
   std::string metric = "flip";
   std::string filters = "material";
   std::string shadows = "off";
+  std::string lights = "scene";
   std::vector<int64_t> shadowSizes{kDefaultShadowMapSize};
   uint32_t frames = 60;
   uint32_t rounds = 2;
@@ -83,12 +86,47 @@ std::vector<uint32_t> checkShadowSizes(const std::vector<int64_t>& sizes) {
   return checked;
 }
 
+// "320x180,1280x720" -> frame sizes; throws InputError naming a bad entry.
+std::vector<glm::uvec2> parseSizeList(const std::string& text) {
+  std::vector<glm::uvec2> sizes;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    Size size = parseSize(item, "--size");
+    sizes.emplace_back(size.width, size.height);
+  }
+  if (sizes.empty()) throw InputError("--size '" + text + "': expected WIDTHxHEIGHT");
+  return sizes;
+}
+
+// "scene,1,4" -> {0, 1, 4} (0: the scene's own lights); throws InputError.
+std::vector<uint32_t> parseLightList(const std::string& text) {
+  std::vector<uint32_t> counts;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (item == "scene") {
+      counts.push_back(0);
+      continue;
+    }
+    char* end = nullptr;
+    long count = item.empty() ? 0 : std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || count < 1 || count > MAX_LIGHTS)
+      throw InputError("--lights '" + item + "': expected scene or a count from 1 to " +
+                       std::to_string(MAX_LIGHTS));
+    counts.push_back(uint32_t(count));
+  }
+  if (counts.empty()) throw InputError("--lights '" + text + "': expected at least one count");
+  return counts;
+}
+
 // One line per setting: cost (with the multiple of the unlit floor), memory,
 // error; settings on the Pareto front are starred.
 void printResults(const std::vector<BenchResult>& results, const ErrorMetric& metric,
-                  size_t metricIndex, FILE* out) {
+                  size_t metricIndex, bool showFrame, FILE* out) {
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, metricIndex), metricIndex, metric);
+  if (showFrame) std::fprintf(out, "%-10s %6s ", "size", "lights");
   std::fprintf(out, "%-12s %5s %5s %-9s %-10s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess",
                "msaa", "filter", "shadows", "triangles", "median ms", "p95 ms", "x floor", "dev MB",
                "rss MB", metric.name.c_str());
@@ -98,18 +136,25 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
     for (const BenchResult& f : results)
       if (f.point.model == ShadingModel::Unlit && f.point.tessellation == r.point.tessellation &&
           f.point.msaaSamples == r.point.msaaSamples && f.point.filter == r.point.filter &&
-          f.point.shadows == r.point.shadows && f.point.shadowMapSize == r.point.shadowMapSize)
+          f.point.shadows == r.point.shadows && f.point.shadowMapSize == r.point.shadowMapSize &&
+          f.point.width == r.point.width && f.point.height == r.point.height &&
+          f.point.lights == r.point.lights)
         floor = &f;
     char ratio[16] = "-";
     if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
     bool onFront = std::find(front.begin(), front.end(), i) != front.end();
-    std::fprintf(out, "%-12s %5g %5u %-9s %-10s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9.3f%s\n",
+    if (showFrame) {
+      std::string frame = std::to_string(r.point.width) + "x" + std::to_string(r.point.height);
+      std::fprintf(out, "%-10s %6u ", frame.c_str(), r.lights);
+    }
+    char error[16] = "-";
+    if (metricIndex < r.errors.size()) std::snprintf(error, sizeof error, "%.3f", r.errors[metricIndex]);
+    std::fprintf(out, "%-12s %5g %5u %-9s %-10s %10llu %10.3f %8.3f %8s %8.1f %8.1f %9s%s\n",
                  std::string(shadingModelName(r.point.model)).c_str(), r.point.tessellation,
                  r.point.msaaSamples, benchFilterName(r.point.filter).c_str(),
                  benchShadowName(r.point).c_str(), static_cast<unsigned long long>(r.triangles),
                  r.deviceMedianMs, r.deviceP95Ms, ratio, double(r.deviceMemoryBytes) / (1 << 20),
-                 double(r.peakResidentBytes) / (1 << 20),
-                 metricIndex < r.errors.size() ? r.errors[metricIndex] : 0.0, onFront ? " *" : "");
+                 double(r.peakResidentBytes) / (1 << 20), error, onFront ? " *" : "");
   }
   std::fprintf(out,
                "* on the Pareto front of device time against %s; dev MB: device memory "
@@ -118,18 +163,19 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
 }
 
 int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
-  Size size = parseSize(options.size, "--size");
   BenchAxes axes{parseShadingModelList(options.modes, "--modes"),
                  options.tessellations,
                  options.msaa,
                  parseFilterList(options.filters),
                  parseShadowList(options.shadows),
-                 checkShadowSizes(options.shadowSizes)};
-  BenchOptions bench{size.width,
-                     size.height,
-                     options.frames,
-                     options.rounds,
-                     findReference(options.reference, "--reference"),
+                 checkShadowSizes(options.shadowSizes),
+                 parseSizeList(options.size),
+                 parseLightList(options.lights)};
+  glm::uvec2 size = axes.sizes.front();
+  // none: time only (a scaling sweep need not trace each size and light count).
+  BenchOptions bench{options.frames, options.rounds,
+                     options.reference == "none" ? Reference{"none", "no error measured", {}}
+                                                 : findReference(options.reference, "--reference"),
                      errorMetrics()};
   const ErrorMetric& charted = findErrorMetric(options.metric, "--metric");
   size_t chartedIndex = size_t(&charted - errorMetrics().data());
@@ -146,11 +192,16 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   std::vector<BenchResult> results;
   {
     Renderer renderer(*context);
-    std::fprintf(stderr, "bench: scene %s at %ux%u, %zu settings x %u rounds x %u frames\n",
-                 scene.name.c_str(), size.width, size.height, points.size(), options.rounds,
+    std::fprintf(stderr, "bench: scene %s at %s, %zu settings x %u rounds x %u frames\n",
+                 scene.name.c_str(), options.size.c_str(), points.size(), options.rounds,
                  options.frames);
-    results = runBenchmark(renderer, scene, points, bench, [](const std::string& line) {
-      std::fprintf(stderr, "  %s\n", line.c_str());
+    // Each run and reference as it finishes, with an ETA, on a terminal only.
+    Progress progress("bench", double(points.size()) * options.rounds);
+    results = runBenchmark(renderer, scene, points, bench, [&](const std::string& line) {
+      if (line.rfind("round ", 0) == 0)
+        progress.step(line);
+      else
+        progress.note(line);
     });
   }
   fs::path folder(options.output);
@@ -168,17 +219,22 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     writeImage(errorTriangleChart(results, chartedIndex, charted, title),
                folder / "error_vs_triangles.png");
   });
+  ImageU8 scaling = scalingChart(results, "Scene " + scene.name);
+  if (scaling.width > 0)
+    outputs.add(folder / "scaling.png", [&] { writeImage(scaling, folder / "scaling.png"); });
   outputs.keep();
   FILE* out = options.json.human();
-  printResults(results, charted, chartedIndex, out);
+  bool showFrame = axes.sizes.size() > 1 || axes.lights != std::vector<uint32_t>{0};
+  printResults(results, charted, chartedIndex, showFrame, out);
   std::fprintf(out,
                "device medians over %zu steady frames per setting; wrote %s/{results.csv, "
-               "error_vs_time.png, error_vs_triangles.png}\n",
-               results.empty() ? size_t(0) : results.front().frames, folder.c_str());
+               "error_vs_time.png, error_vs_triangles.png%s}\n",
+               results.empty() ? size_t(0) : results.front().frames, folder.c_str(),
+               scaling.width > 0 ? ", scaling.png" : "");
   nlohmann::json json = {{"scene", scene.name},
                          {"settings",
-                          {{"width", size.width},
-                           {"height", size.height},
+                          {{"width", size.x},
+                           {"height", size.y},
                            {"frames", options.frames},
                            {"rounds", options.rounds},
                            {"reference", bench.reference.name},
@@ -188,6 +244,7 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
                           {{"csv", jsonPath(folder / "results.csv")},
                            {"error_vs_time", jsonPath(folder / "error_vs_time.png")},
                            {"error_vs_triangles", jsonPath(folder / "error_vs_triangles.png")}}}};
+  if (scaling.width > 0) json["outputs"]["scaling"] = jsonPath(folder / "scaling.png");
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, chartedIndex), chartedIndex, charted);
   for (size_t i = 0; i < results.size(); ++i) {
@@ -213,7 +270,11 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->add_option("-o,--output", options->output,
                    "Folder for results.csv and the charts (created if needed)")
       ->required();
-  command->add_option("--size", options->size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  command
+      ->add_option("--size", options->size,
+                   "Frame sizes WIDTHxHEIGHT, comma-separated (more than one: the resolution "
+                   "axis of scaling.png)")
+      ->capture_default_str();
   command
       ->add_option("--modes", options->modes,
                    "Shading models to measure; unlit is the constant-colour floor")
@@ -241,9 +302,16 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->delimiter(',')
       ->capture_default_str();
   command
+      ->add_option("--lights", options->lights,
+                   "Light counts, comma-separated: scene (the scene's own lights) or 1 to 8 "
+                   "point lights on a ring above the scene, each 1/N as bright (the lights axis "
+                   "of scaling.png)")
+      ->capture_default_str();
+  command
       ->add_option("--reference", options->reference,
                    "What each setting's error is measured against: trace (the CPU Whitted ray "
-                   "tracer, 4 spp) or raster (Phong, 4x tessellation, 4x MSAA)")
+                   "tracer, 4 spp), raster (Phong, 4x tessellation, 4x MSAA) or none (time "
+                   "only; the charts of error are then empty)")
       ->capture_default_str();
   command
       ->add_option("--metric", options->metric,

@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +10,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/json_output.h"
+#include "app/progress.h"
 #include "app/look_options.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -70,16 +69,15 @@ std::vector<std::string> writeSequence(Renderer& renderer, const Scene& scene,
   OutputGroup outputs;
   std::vector<std::string> written;
   std::vector<ImageU8> animation;
-  bool progress = isatty(STDERR_FILENO);
+  Progress progress("frames", double(cameras.size()));
   stats = renderer.renderSequence(scene, settings, cameras, [&](uint32_t i, ImageRgba&& image) {
     std::string path = sequenceFramePath(options.output, i + 1);
     if (options.gif) animation.push_back(encodeSrgb8(image));
     outputs.add(path, [&] { writeImage(image, path); });
     written.push_back(path);
-    if (progress)
-      std::fprintf(stderr, "\rframe %u/%zu%s", i + 1, cameras.size(),
-                   i + 1 == cameras.size() ? "\n" : "");
+    progress.step();
   });
+  progress.finish();
   if (options.gif) {
     std::string gif = std::filesystem::path(options.output).replace_extension(".gif").string();
     outputs.add(gif, [&] { writeAnimatedGif(animation, gif, options.framesPerSecond); });
@@ -201,6 +199,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   bool autoTessellation = options.tessellation == "auto";
   float factor = autoTessellation ? 1.0f : parseTessellationFactor(options.tessellation);
   BenchPoint point{parseNamed(kShadingModelNames, options.mode, "--mode"), factor, options.msaa};
+  point.width = size.width;
+  point.height = size.height;
   DepthMode depth = parseNamed(kDepthModeNames, options.depth, "--depth");
   FrameSettings look;
   applyLookOptions(options.look, look);
@@ -239,17 +239,24 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     if (options.quality) {
       bool quick = options.benchFolder.empty();
       if (quick) {
-        std::fprintf(stderr, "quality: quick sweep of 48 settings against the %s reference\n",
-                     reference.name.c_str());
-        cached = quickQualitySweep(
-            renderer, scene, reference, metric, size.width, size.height, options.msaa,
-            [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); });
+        std::fprintf(stderr, "quality: quick sweep of %zu settings against the %s reference\n",
+                     kQuickSweepSettings, reference.name.c_str());
+        Progress progress("quality sweep", double(kQuickSweepSettings));
+        cached = quickQualitySweep(renderer, scene, reference, metric, size.width, size.height,
+                                   options.msaa, [&](const std::string& line) {
+                                     if (line.rfind("round ", 0) == 0)
+                                       progress.step(line);
+                                     else
+                                       progress.note(line);
+                                   });
       }
       point =
           reportQualityChoice(cached, metric, *options.quality,
                               quick ? "a quick sweep against the " + reference.name + " reference"
                                     : options.benchFolder + "/results.csv",
                               out);
+      point.width = size.width;  // chosen for this render's size, whatever the table's
+      point.height = size.height;
     }
     if (point.tessellation != 1.0f) scene.retessellate(point.tessellation);
     settings.shadingModel = point.model;

@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/progress.h"
 #include "app/json_output.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -91,7 +92,9 @@ int runStudy(const StudyCommandOptions& options, const GlobalOptions& global) {
     }
     return *renderer;
   };
-  services.progress = [](const std::string& line) { std::fprintf(stderr, "  %s\n", line.c_str()); };
+  // Each row the study measures, on a terminal only (its table is printed at the end).
+  Progress progress("study " + options.name, 0.0);
+  services.progress = [&](const std::string& line) { progress.step(line); };
   std::fprintf(stderr, "study %s at %ux%u: %s\n", options.name.c_str(), run.width, run.height,
                std::string(study.summary).c_str());
   StudyResult result;
@@ -105,6 +108,7 @@ int runStudy(const StudyCommandOptions& options, const GlobalOptions& global) {
     if (!folderExisted) std::filesystem::remove_all(run.output, error);
     throw;
   }
+  progress.finish();
   renderer.reset();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,6 +1,5 @@
 // shadelab trace: the CPU Whitted ray tracer's image of a scene, the ground
 // truth `compare` measures the rasterised modes against. No Vulkan device.
-#include <unistd.h>
 
 #include <charconv>
 #include <chrono>
@@ -11,6 +10,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/json_output.h"
+#include "app/progress.h"
 #include "core/base/errors.h"
 #include "core/base/image.h"
 #include "core/scene/scene_loader.h"
@@ -69,15 +69,14 @@ int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   settings.fresnel = fresnel;
   settings.epsilon = epsilon;
   // Progress on a terminal only, so logs and pipes get just the summary.
-  if (isatty(STDERR_FILENO))
-    settings.progress = [](float fraction) {
-      std::fprintf(stderr, "\rtracing: %3.0f%%%s", 100.0f * fraction, fraction >= 1.0f ? "\n" : "");
-    };
+  Progress progress("tracing", 1.0);
+  settings.progress = [&](float fraction) { progress.set(fraction); };
 
   const auto start = std::chrono::steady_clock::now();
   RayTracer tracer(scene);
   const auto built = std::chrono::steady_clock::now();
   TraceResult result = tracer.render(settings);
+  progress.finish();
   const auto done = std::chrono::steady_clock::now();
   writeImage(result.image, options.output);
 

@@ -98,7 +98,10 @@ nlohmann::json toJson(const BenchPoint& point) {
           {"msaa", point.msaaSamples},
           {"filter", benchFilterName(point.filter)},
           {"shadows", std::string(nameOf(kShadowMethodNames, point.shadows))},
-          {"shadow_map_size", point.shadows == ShadowMethod::Off ? 0u : point.shadowMapSize}};
+          {"shadow_map_size", point.shadows == ShadowMethod::Off ? 0u : point.shadowMapSize},
+          {"width", point.width},
+          {"height", point.height},
+          {"lights", point.lights}};
 }
 
 nlohmann::json toJson(const BenchResult& result, const std::vector<ErrorMetric>& metrics) {
@@ -107,6 +110,7 @@ nlohmann::json toJson(const BenchResult& result, const std::vector<ErrorMetric>&
     errors[metrics[i].name] = result.errors[i];
   return {{"setting", toJson(result.point)},
           {"triangles", result.triangles},
+          {"lights", result.lights},
           {"steady_frames", result.frames},
           {"device_median_ms", result.deviceMedianMs},
           {"device_p95_ms", result.deviceP95Ms},

@@ -125,4 +125,80 @@ ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metri
   return drawChart(chart, kChartWidth, kChartHeight);
 }
 
+ImageU8 scalingChart(const std::vector<BenchResult>& results, const std::string& title) {
+  if (results.empty()) return {};
+  // An axis: its value in a result, the chart's x of that result, its label.
+  struct Axis {
+    const char* name;
+    const char* label;
+    double (*key)(const BenchResult&);
+    double (*x)(const BenchResult&);
+  };
+  const Axis axes[] = {
+      {"triangles", "triangles per frame (log)",
+       [](const BenchResult& r) { return double(r.point.tessellation); },
+       [](const BenchResult& r) { return double(r.triangles); }},
+      {"pixels", "pixels per frame (log)",
+       [](const BenchResult& r) { return double(r.point.width) * r.point.height; },
+       [](const BenchResult& r) { return double(r.point.width) * r.point.height; }},
+      {"lights", "lights (log)", [](const BenchResult& r) { return double(r.point.lights); },
+       [](const BenchResult& r) { return double(r.lights); }}};
+  const BenchPoint& first = results.front().point;
+  auto sameOtherwise = [&](const BenchResult& r, const Axis& free) {
+    const BenchPoint& p = r.point;
+    bool same = p.msaaSamples == first.msaaSamples && p.filter == first.filter &&
+                p.shadows == first.shadows && p.shadowMapSize == first.shadowMapSize;
+    for (const Axis& axis : axes)
+      if (&axis != &free) same = same && axis.key(r) == axis.key(results.front());
+    return same;
+  };
+  std::vector<Chart> charts;
+  for (const Axis& axis : axes) {
+    std::vector<double> values;
+    for (const BenchResult& r : results)
+      if (std::find(values.begin(), values.end(), axis.key(r)) == values.end())
+        values.push_back(axis.key(r));
+    if (values.size() < 2) continue;
+    Chart chart;
+    chart.title = std::string("Frame time against ") + axis.name;
+    // What the panel holds still: the first value of every other axis.
+    const BenchResult& held = results.front();
+    char part[64];
+    std::string subtitle = title;
+    if (&axis != &axes[1]) {
+      std::snprintf(part, sizeof part, ", %ux%u", held.point.width, held.point.height);
+      subtitle += part;
+    }
+    if (&axis != &axes[2]) subtitle += ", " + std::to_string(held.lights) + " lights";
+    if (&axis != &axes[0]) {
+      std::snprintf(part, sizeof part, ", %llu triangles",
+                    static_cast<unsigned long long>(held.triangles));
+      subtitle += part;
+    }
+    std::snprintf(part, sizeof part, ", %ux MSAA, shadows %s", held.point.msaaSamples,
+                  benchShadowName(held.point).c_str());
+    chart.subtitle = subtitle + part;
+    chart.x = {axis.label, AxisScale::Log};
+    chart.y = {"device frame time, median ms (log)", AxisScale::Log};
+    std::map<ShadingModel, ChartSeries> byModel;
+    for (const BenchResult& r : results) {
+      if (!sameOtherwise(r, axis)) continue;
+      ChartSeries& series = byModel[r.point.model];
+      series.name = r.point.model == ShadingModel::Unlit ? "unlit (floor)"
+                                                         : std::string(shadingModelName(r.point.model));
+      series.color = chartColor(size_t(r.point.model));
+      series.connect = true;
+      series.points.push_back({axis.x(r), r.deviceMedianMs, ""});
+    }
+    for (auto& [model, series] : byModel) {
+      std::sort(series.points.begin(), series.points.end(),
+                [](const ChartPoint& a, const ChartPoint& b) { return a.x < b.x; });
+      chart.series.push_back(series);
+    }
+    charts.push_back(chart);
+  }
+  if (charts.empty()) return {};
+  return drawChartRow(charts, 520, 420);
+}
+
 }  // namespace shadelab

@@ -24,4 +24,10 @@ ImageU8 errorTimeChart(const std::vector<BenchResult>& results, size_t metricInd
 ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metricIndex,
                            const ErrorMetric& metric, const std::string& title);
 
+// How the frame time grows: a log-log panel per axis that varies among the
+// results (triangles through the tessellation sweep, pixels through the frame
+// sizes, lights through the light counts), a line per shading model, the
+// other axes held at their first value. Empty (0x0) when none varies.
+ImageU8 scalingChart(const std::vector<BenchResult>& results, const std::string& title);
+
 }  // namespace shadelab

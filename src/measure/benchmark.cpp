@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <map>
+#include <tuple>
 #include <sstream>
 
 #include "core/base/errors.h"
 #include "core/base/process_memory.h"
 #include "core/base/stats.h"
+#include "core/scene/frustum.h"
+#include "core/scene/gltf_loader.h"
 #include "core/scene/texture.h"
 
 namespace shadelab {
@@ -22,13 +27,33 @@ std::vector<BenchPoint> benchPoints(const BenchAxes& axes) {
     else
       for (uint32_t size : axes.shadowMapSizes) shadows.emplace_back(method, size);
   }
-  for (float tessellation : axes.tessellations)
-    for (uint32_t samples : axes.msaa)
-      for (const std::optional<TextureFilter>& filter : axes.filters)
-        for (auto [method, size] : shadows)
-          for (ShadingModel model : axes.models)
-            points.push_back({model, tessellation, samples, filter, method, size});
+  for (glm::uvec2 frame : axes.sizes)
+    for (uint32_t lights : axes.lights)
+      for (float tessellation : axes.tessellations)
+        for (uint32_t samples : axes.msaa)
+          for (const std::optional<TextureFilter>& filter : axes.filters)
+            for (auto [method, size] : shadows)
+              for (ShadingModel model : axes.models)
+                points.push_back({model, tessellation, samples, filter, method, size, frame.x,
+                                  frame.y, lights});
   return points;
+}
+
+Scene withLightRing(const Scene& scene, uint32_t count) {
+  Scene lit = scene;
+  Bounds bounds = sceneBounds(scene);
+  glm::vec3 middle = centre(bounds);
+  float radius = std::max(boundingRadius(bounds), 1e-3f);
+  lit.lights.clear();
+  for (uint32_t i = 0; i < count; ++i) {
+    float angle = 2.0f * glm::pi<float>() * (float(i) + 0.5f) / float(count);
+    Light light;
+    light.type = LightType::Point;
+    light.position = middle + radius * glm::vec3(std::cos(angle), 1.0f, std::sin(angle));
+    light.intensity = glm::vec3(1.0f / float(count));
+    lit.lights.push_back(light);
+  }
+  return lit;
 }
 
 std::string benchFilterName(const std::optional<TextureFilter>& filter) {
@@ -43,33 +68,44 @@ std::string benchShadowName(const BenchPoint& point) {
 }
 
 std::string benchPointName(const BenchPoint& point) {
-  char text[96];
+  char text[128];
   std::snprintf(text, sizeof text, "%s t%g %ux%s%s%s%s",
                 std::string(shadingModelName(point.model)).c_str(), point.tessellation,
                 point.msaaSamples, point.filter ? " " : "",
                 point.filter ? textureFilterName(*point.filter) : "",
                 point.shadows != ShadowMethod::Off ? " " : "",
                 point.shadows != ShadowMethod::Off ? benchShadowName(point).c_str() : "");
-  return text;
+  if (point.lights == 0) return text;
+  char lights[32];
+  std::snprintf(lights, sizeof lights, " %u lights", point.lights);
+  return std::string(text).append(lights);
 }
 
 std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
                                       const std::vector<BenchPoint>& points,
                                       const BenchOptions& options,
                                       const std::function<void(const std::string&)>& progress) {
-  // Each tessellation is built once, not once per round.
-  std::map<float, Scene> scenes;
-  for (const BenchPoint& point : points)
-    if (!scenes.count(point.tessellation)) {
-      Scene tessellated = scene;
-      if (point.tessellation != 1.0f) tessellated.retessellate(point.tessellation);
-      scenes.emplace(point.tessellation, std::move(tessellated));
+  // Each tessellation and light count is built once, not once per round;
+  // each frame size and light count has its reference image.
+  std::map<std::pair<float, uint32_t>, Scene> scenes;
+  std::map<std::tuple<uint32_t, uint32_t, uint32_t>, ImageU8> references;
+  bool measured = options.reference.render && !options.metrics.empty();
+  for (const BenchPoint& point : points) {
+    std::pair<float, uint32_t> key{point.tessellation, point.lights};
+    if (!scenes.count(key)) {
+      Scene built = point.lights > 0 ? withLightRing(scene, point.lights) : scene;
+      if (point.tessellation != 1.0f) built.retessellate(point.tessellation);
+      scenes.emplace(key, std::move(built));
     }
-  ImageU8 reference;
-  if (options.reference.render && !options.metrics.empty()) {
-    progress("reference: " + options.reference.name + " (" + options.reference.description + ")");
-    reference =
-        encodeSrgb8(options.reference.render(renderer, scene, options.width, options.height));
+    std::tuple<uint32_t, uint32_t, uint32_t> frame{point.width, point.height, point.lights};
+    if (measured && !references.count(frame)) {
+      progress("reference: " + options.reference.name + " (" + options.reference.description +
+               ") at " + std::to_string(point.width) + "x" + std::to_string(point.height) +
+               (point.lights > 0 ? ", " + std::to_string(point.lights) + " lights" : ""));
+      Scene lit = point.lights > 0 ? withLightRing(scene, point.lights) : scene;
+      references.emplace(frame, encodeSrgb8(options.reference.render(renderer, lit, point.width,
+                                                                       point.height)));
+    }
   }
 
   std::vector<BenchResult> results(points.size());
@@ -78,14 +114,15 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
     for (size_t i = 0; i < points.size(); ++i) {
       const BenchPoint& point = points[i];
       BenchResult& result = results[i];
-      RenderSettings settings{options.width, options.height, point.model};
+      RenderSettings settings{point.width, point.height, point.model};
       settings.frames = options.frames;
       settings.msaaSamples = point.msaaSamples;
       settings.textures.filterOverride = point.filter;
       settings.shadows = point.shadows;
       settings.shadowMapSize = point.shadowMapSize;
       resetPeakResident();
-      RenderResult run = renderer.renderToImage(scenes.at(point.tessellation), settings);
+      RenderResult run =
+          renderer.renderToImage(scenes.at({point.tessellation, point.lights}), settings);
       result.deviceMemoryBytes = std::max(result.deviceMemoryBytes, run.stats.deviceMemoryBytes);
       result.peakResidentBytes = std::max(result.peakResidentBytes, peakResidentBytes());
       const RenderStats& stats = run.stats;
@@ -95,9 +132,11 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       wall[i].insert(wall[i].end(), stats.wallMs.begin() + long(warmup), stats.wallMs.end());
       result.point = point;
       result.triangles = stats.triangles;
+      result.lights = uint32_t(scenes.at({point.tessellation, point.lights}).lights.size());
       std::string errors;
       // Output is deterministic, so the first round's image stands for all.
-      if (round == 0 && reference.width > 0) {
+      if (round == 0 && measured) {
+        const ImageU8& reference = references.at({point.width, point.height, point.lights});
         ImageU8 image = encodeSrgb8(run.image);
         for (const ErrorMetric& metric : options.metrics) {
           result.errors.push_back(metric.measure(reference, image));
@@ -106,12 +145,16 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
           errors += text;
         }
       }
-      char line[240];
-      std::snprintf(
-          line, sizeof line, "round %u/%u  %-11s tess %-5g msaa %u shadows %-9s median %.3f ms%s",
-          round + 1, options.rounds, std::string(shadingModelName(point.model)).c_str(),
-          point.tessellation, point.msaaSamples, benchShadowName(point).c_str(),
-          median({stats.deviceMs.begin() + long(warmup), stats.deviceMs.end()}), errors.c_str());
+      char line[280];
+      std::snprintf(line, sizeof line,
+                    "round %u/%u  %-11s %ux%u lights %-5s tess %-5g msaa %u shadows %-9s median "
+                    "%.3f ms%s",
+                    round + 1, options.rounds, std::string(shadingModelName(point.model)).c_str(),
+                    point.width, point.height,
+                    point.lights > 0 ? std::to_string(point.lights).c_str() : "scene",
+                    point.tessellation, point.msaaSamples, benchShadowName(point).c_str(),
+                    median({stats.deviceMs.begin() + long(warmup), stats.deviceMs.end()}),
+                    errors.c_str());
       progress(line);
     }
   for (size_t i = 0; i < points.size(); ++i) {
@@ -131,9 +174,10 @@ std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions
          "device_median_ms,device_p95_ms,wall_median_ms,wall_p95_ms,"
          "device_memory_mb,peak_rss_mb,reference";
   for (const ErrorMetric& metric : options.metrics) csv << ',' << metric.name;
-  csv << '\n';
+  // Columns added later go last, so that older readers' positions hold.
+  csv << ",lights\n";
   for (const BenchResult& r : results) {
-    csv << sceneName << ',' << options.width << ',' << options.height << ','
+    csv << sceneName << ',' << r.point.width << ',' << r.point.height << ','
         << shadingModelName(r.point.model) << ',' << r.point.tessellation << ','
         << r.point.msaaSamples << ',' << benchFilterName(r.point.filter) << ','
         << nameOf(kShadowMethodNames, r.point.shadows) << ','
@@ -145,7 +189,7 @@ std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions
       csv << ',';
       if (m < r.errors.size()) csv << r.errors[m];
     }
-    csv << '\n';
+    csv << ',' << r.lights << '\n';
   }
   return csv.str();
 }

@@ -27,6 +27,8 @@ struct BenchPoint {
   std::optional<TextureFilter> filter;  // overrides every sampler; none: the materials' own
   ShadowMethod shadows = ShadowMethod::Off;
   uint32_t shadowMapSize = kDefaultShadowMapSize;  // meaningless with shadows off
+  uint32_t width = 1280, height = 720;             // frame size
+  uint32_t lights = 0;  // 0: the scene's own lights; else that many on a ring (withLightRing)
 };
 
 // The sweep: every combination, models varying fastest.
@@ -37,6 +39,8 @@ struct BenchAxes {
   std::vector<std::optional<TextureFilter>> filters{std::nullopt};
   std::vector<ShadowMethod> shadows{ShadowMethod::Off};
   std::vector<uint32_t> shadowMapSizes{kDefaultShadowMapSize};  // only with shadows on
+  std::vector<glm::uvec2> sizes{{1280, 720}};
+  std::vector<uint32_t> lights{0};
 };
 std::vector<BenchPoint> benchPoints(const BenchAxes& axes);
 // "phong t2 4x", "phong t2 4x nearest", "phong t1 1x hard 2048"
@@ -46,13 +50,17 @@ std::string benchShadowName(const BenchPoint& point);
 // "material" for no override, else the filter's name.
 std::string benchFilterName(const std::optional<TextureFilter>& filter);
 
+// `scene` with its lights replaced by `count` white point lights of
+// intensity 1 / count, evenly spaced on a ring above the scene's bounds (the
+// lights axis: how the cost grows with the lights, not a way to light it).
+Scene withLightRing(const Scene& scene, uint32_t count);
+
 struct BenchOptions {
-  uint32_t width = 1280;
-  uint32_t height = 720;
   uint32_t frames = 120;  // per round and point; the first tenth is warm-up
   uint32_t rounds = 3;
-  // The error of each point's image against the reference, per metric; no
-  // reference (empty render): no errors measured.
+  // The error of each point's image against the reference (traced once per
+  // frame size and light count), per metric; no reference (empty render):
+  // no errors measured.
   Reference reference;
   std::vector<ErrorMetric> metrics;
 };
@@ -60,6 +68,7 @@ struct BenchOptions {
 struct BenchResult {
   BenchPoint point;
   uint64_t triangles = 0;
+  uint32_t lights = 0;                             // in the frame's scene
   size_t frames = 0;                               // steady frames measured, over all rounds
   double deviceMedianMs = 0.0, deviceP95Ms = 0.0;  // GPU timestamps around each frame
   double wallMedianMs = 0.0, wallP95Ms = 0.0;      // between successive frame completions

@@ -1,6 +1,7 @@
 #include "measure/quality.h"
 
 #include <algorithm>
+#include <cassert>
 
 #include "core/base/errors.h"
 
@@ -30,12 +31,14 @@ std::vector<QualityCandidate> quickQualitySweep(
       {msaa},
       {std::nullopt},
       {ShadowMethod::Off, ShadowMethod::Hard, ShadowMethod::Pcf3},
-      {kDefaultShadowMapSize}};
+      {kDefaultShadowMapSize},
+      {{width, height}}};
   // Few frames: enough to rank settings whose costs differ by more than the
   // noise; `bench` measures properly.
-  BenchOptions options{width, height, /* frames= */ 8, /* rounds= */ 1, reference, {metric}};
-  std::vector<BenchResult> results =
-      runBenchmark(renderer, scene, benchPoints(axes), options, progress);
+  BenchOptions options{/* frames= */ 8, /* rounds= */ 1, reference, {metric}};
+  std::vector<BenchPoint> points = benchPoints(axes);
+  assert(points.size() == kQuickSweepSettings);
+  std::vector<BenchResult> results = runBenchmark(renderer, scene, points, options, progress);
   std::vector<QualityCandidate> candidates;
   for (const BenchResult& r : results)
     candidates.push_back({r.point, r.triangles, r.deviceMedianMs, r.errors.at(0)});

@@ -28,7 +28,8 @@ std::optional<size_t> cheapestMeeting(const std::vector<QualityCandidate>& candi
                                       const ErrorMetric& metric, double bound);
 
 // Every lit model x tessellation 0.5, 1, 2, 4 x shadows off, hard, pcf3
-// (default map size) at `msaa`, a few frames each.
+// (default map size) at `msaa`, a few frames each: kQuickSweepSettings runs.
+inline constexpr size_t kQuickSweepSettings = 4 * 4 * 3;
 std::vector<QualityCandidate> quickQualitySweep(
     Renderer& renderer, const Scene& scene, const Reference& reference, const ErrorMetric& metric,
     uint32_t width, uint32_t height, uint32_t msaa,

@@ -546,14 +546,14 @@ TraceResult RayTracer::render(const TraceSettings& settings) const {
   // Rows are handed out dynamically, but each pixel depends only on its own
   // coordinates: the image is the same for any thread count and order.
   auto work = [&](TraceStats& stats, bool reports) {
-    uint32_t reported = 0;  // tenths
+    uint32_t reported = 0;  // hundredths
     for (uint32_t y = nextRow++; y < settings.height; y = nextRow++) {
       if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
       for (uint32_t x = 0; x < settings.width; ++x)
         result.image.set(x, y, glm::vec4(tracePixel(camera, x, y, grid, settings, stats), 1.0f));
-      const uint32_t tenths = 10 * ++rowsDone / settings.height;
-      if (reports && settings.progress && tenths > reported && tenths < 10)
-        settings.progress(float(reported = tenths) / 10.0f);
+      const uint32_t hundredths = uint32_t(100ull * ++rowsDone / settings.height);
+      if (reports && settings.progress && hundredths > reported && hundredths < 100)
+        settings.progress(float(reported = hundredths) / 100.0f);
     }
   };
   std::vector<std::thread> workers;
