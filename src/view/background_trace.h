@@ -38,7 +38,7 @@ class BackgroundTrace {
   const std::string& error() const { return error_; }
 
   State state() const { return state_; }
-  float progress() const { return progress_.load(); }  // 0..1, in tenths while tracing
+  float progress() const { return progress_.load(); }  // 0..1, in hundredths while tracing
   const ImageU8& image() const { return image_; }      // valid when Ready
   double seconds() const { return seconds_; }          // how long the last trace took
 

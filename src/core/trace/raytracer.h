@@ -61,7 +61,7 @@ struct TraceSettings {
   // kr and kt are fixed weights and shadow rays pass kt per surface, as the
   // tracer did before issue 16; kept to measure what Fresnel changes.
   bool fresnel = true;
-  // Called on the calling thread at each further tenth of the rows done,
+  // Called on the calling thread at each further hundredth of the rows done,
   // and with 1 at the end; empty: no reports.
   std::function<void(float fraction)> progress;
   // When set and it turns true, no further row is started and render()
