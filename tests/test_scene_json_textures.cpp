@@ -5,6 +5,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -23,7 +24,10 @@ using testing::HasSubstr;
 // A folder holding a scene file and a 2x2 PNG beside it.
 fs::path sceneDir() {
   static fs::path dir = [] {
-    fs::path path = fs::path(testing::TempDir()) / "shadelab-json-textures";
+    // Per process: two suites of this file run at once under ctest -j and
+    // must not write the same texture while the other reads it.
+    fs::path path = fs::path(testing::TempDir()) /
+                    ("shadelab-json-textures-" + std::to_string(getpid()));
     fs::create_directories(path / "maps");
     auto out = OIIO::ImageOutput::create("png");
     std::vector<uint8_t> texels = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
@@ -33,6 +37,12 @@ fs::path sceneDir() {
     out->close();
     return path;
   }();
+  static const struct RemoveAtExit {
+    ~RemoveAtExit() {
+      std::error_code error;
+      fs::remove_all(dir, error);
+    }
+  } removeAtExit;
   return dir;
 }
 
