@@ -460,6 +460,57 @@ TEST_F(Cli, CompareSplitsEnvironmentMappingErrorByReflectionRegion) {
       << r.output;
 }
 
+// compare's columns in a suite of their own: ctest runs it beside Cli, whose
+// one process is already long on a loaded 2-core machine.
+class CompareColumns : public Cli {};
+
+// --column with --against: a column drawn with the baseline's very settings
+// measures zero (drawing is deterministic), and the comparison is not blind:
+// a coarser column of the same model measures clearly above it.
+TEST_F(CompareColumns, MeasureAgainstANamedColumn) {
+  CommandResult r =
+      run("compare -o " + out("sheet.png") +
+          " --size 96x54 --column name=base,phong,tess=2,msaa=4"
+          " --column name=same,phong,tess=2,msaa=4 --column name=coarse,phong,tess=0.5"
+          " --against base");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const nlohmann::json report = nlohmann::json::parse(readText(out("sheet.json")));
+  EXPECT_EQ(report["against"], "base");
+  ASSERT_EQ(report["columns"].size(), 3u);
+  const nlohmann::json& same = report["columns"][1]["metrics"];
+  const nlohmann::json& coarse = report["columns"][2]["metrics"];
+  EXPECT_EQ(same["rmse"].get<double>(), 0.0);
+  EXPECT_EQ(same["flip"].get<double>(), 0.0);
+  EXPECT_GT(coarse["flip"].get<double>(), 0.005);  // measured 0.018 at 240x135
+  EXPECT_GT(coarse["rmse"].get<double>(), 1.0);
+  EXPECT_FALSE(report["columns"][0].contains("metrics"));  // the baseline itself
+  EXPECT_NE(r.output.find("against: column 'base'"), std::string::npos) << r.output;
+  EXPECT_EQ(filesLeft(), 2u);
+}
+
+// A column whose settings differ from the others' in more than the model is
+// drawn alone at the cell's size; drawn alone, a Phong column measures
+// against the trace as the same column of a --modes split frame does (one
+// camera, one projection; the shadow map's fit to the frame may move a
+// texel, hence a tolerance of 1e-4 in FLIP, 0.05 in RMSE).
+TEST_F(CompareColumns, DrawnAloneMeasuresAsInTheSplitFrame) {
+  CommandResult split =
+      run("compare -o " + out("split.png") + " --size 96x54 --spp 1 --modes flat,phong");
+  ASSERT_EQ(split.exitCode, 0) << split.output;
+  CommandResult alone = run("compare -o " + out("alone.png") +
+                            " --size 96x54 --spp 1 --column phong --column gouraud,tess=4");
+  ASSERT_EQ(alone.exitCode, 0) << alone.output;
+  const nlohmann::json modes = nlohmann::json::parse(readText(out("split.json")))["modes"];
+  const nlohmann::json columns = nlohmann::json::parse(readText(out("alone.json")))["columns"];
+  const nlohmann::json& fromSplit = modes[1];
+  const nlohmann::json& drawnAlone = columns[0]["metrics"];
+  EXPECT_NEAR(drawnAlone["flip"].get<double>(), fromSplit["flip"].get<double>(), 1e-4);
+  EXPECT_NEAR(drawnAlone["rmse"].get<double>(), fromSplit["rmse"].get<double>(), 0.05);
+  // And not blindly: the flat column of the split frame is well apart.
+  EXPECT_GT(std::abs(modes[0]["flip"].get<double>() - drawnAlone["flip"].get<double>()), 1e-3);
+  EXPECT_EQ(columns[1]["settings"]["tess"], 4.0);
+}
+
 TEST_F(Cli, CompareUnknownReferenceIsAnInputError) {
   CommandResult r = run("compare -o " + out("sheet.png") + " --reference photo");
   EXPECT_EQ(r.exitCode, 2) << r.output;

@@ -131,6 +131,43 @@ def check_compare(binary, cwd):
             check(json.load(file)["modes"] == modes, "compare: c.json's modes differ from stdout's")
 
 
+def check_compare_columns(binary, cwd):
+    """--column: each column with its name, spec and settings, measured
+    against --against's column; the baseline column itself has no metrics."""
+    value, _ = run_json(binary, ["compare", "-o", "k.png", "--size", "32x18", "--spp", "1",
+                                 "--column", "name=coarse,gouraud,tess=0.5",
+                                 "--column", "name=fine,phong,tess=4,msaa=4,shadows=pcf3",
+                                 "--column", "flat,env=off,depth=reversed",
+                                 "--against", "fine"], cwd)
+    if value is None:
+        return
+    columns = value["columns"]
+    check([c["name"] for c in columns] == ["coarse", "fine", "flat,env=off,depth=reversed"],
+          f"compare columns: names {[c['name'] for c in columns]}")
+    check(value["against"] == "fine", f"compare columns: against {value['against']}")
+    if len(columns) == 3:
+        coarse, fine, flat = columns
+        check(coarse["settings"]["tess"] == 0.5 and coarse["settings"]["mode"] == "gouraud",
+              f"compare columns: coarse {coarse['settings']}")
+        check(fine["settings"]["msaa"] == 4 and fine["settings"]["shadows"] == "pcf3" and
+              fine["settings"]["tess"] == 4, f"compare columns: fine {fine['settings']}")
+        check(flat["settings"]["environment"] is False and flat["settings"]["depth"] == "reversed",
+              f"compare columns: flat {flat['settings']}")
+        check("metrics" not in fine, "compare columns: the baseline measured against itself")
+        # More tessellation, more triangles.
+        check(fine["triangles"] > coarse["triangles"] > 0,
+              f"compare columns: triangles {coarse['triangles']}, {fine['triangles']}")
+        for c in (coarse, flat):
+            check(c["against"] == "fine", f"compare columns: {c['name']} against {c['against']}")
+            in_range("compare columns", f"{c['name']} flip", c["metrics"]["flip"], 1e-6, 1.0)
+            in_range("compare columns", f"{c['name']} rmse", c["metrics"]["rmse"], 1e-6, 255.0)
+    if os.path.isfile(value["outputs"]["json"]):
+        with open(value["outputs"]["json"]) as file:
+            written = json.load(file)
+        check(written["columns"] == columns and written["against"] == "fine",
+              "compare columns: k.json's columns differ from stdout's")
+
+
 def check_bench(binary, cwd):
     value, _ = run_json(binary, ["bench", "-o", "b", "--size", "32x18", "--frames", "2",
                                  "--rounds", "1", "--modes", "unlit,phong", "--tess", "1",
@@ -175,6 +212,7 @@ def main(argv):
         check_trace(binary, cwd, triangles)
         print(f"trace: {len(failures)} failed check(s) so far")
         check_compare(binary, cwd)
+        check_compare_columns(binary, cwd)
         print(f"compare: {len(failures)} failed check(s) so far")
         check_bench(binary, cwd)
         print(f"bench: {len(failures)} failed check(s) so far")

@@ -3,14 +3,18 @@
 // messages, and run-time GLSL compilation against the build's SPIR-V.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/constants.hpp>
+#include <thread>
 
 #include "core/base/errors.h"
+#include "core/trace/raytracer.h"
 #include "core/vulkan/shader_table.h"
 #include "passes/renderer.h"
+#include "view/background_trace.h"
 #include "view/camera_controller.h"
 #include "view/glsl_compiler.h"
 #include "view/viewer_script.h"
@@ -127,12 +131,69 @@ TEST(ViewerScript, BadLinesNameFileLineAndWhatWasExpected) {
   EXPECT_NE(parseError("drag 1 2 3 4 thumb").find("expected 'drag"), std::string::npos);
   EXPECT_NE(parseError("resize 0 10").find("W and H in 1..8192"), std::string::npos);
   EXPECT_NE(parseError("quit now").find("'quit' with nothing after it"), std::string::npos);
+  EXPECT_NE(parseError("wait-reference 5").find("'wait-reference' with nothing after it"),
+            std::string::npos);
   EXPECT_NE(parseError("\n\njump").find("bad.txt:3: 'jump': expected a step"), std::string::npos);
   EXPECT_EQ(parseError("minimize\nscreenshot a.png\n"),
             "bad.txt:2: 'screenshot a.png': expected 'restore' first: nothing is presented while "
             "minimised");
   EXPECT_NE(parseError("screenshot a.jpg").find("(a .png file)"), std::string::npos);
   EXPECT_NE(parseError("screenshot /no/such/dir/a.png").find("bad.txt:1:"), std::string::npos);
+}
+
+TEST(ViewerScript, WaitReferenceIsAStep) {
+  std::vector<ScriptStep> steps = parseViewerScriptText("key C\nwait-reference\n", "s.txt", kKeys);
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps[1].kind, ScriptStep::Kind::WaitReference);
+}
+
+// Until a background trace is collected (no clock: it finishes when it does).
+bool collectWhenDone(BackgroundTrace& trace) {
+  while (trace.state() == BackgroundTrace::State::Tracing)
+    if (trace.collect())
+      return true;
+    else
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  return false;
+}
+
+// X's reference: what the thread hands over is the tracer's own image of the
+// scene copy, bit for bit (sRGB, as compare measures); the must-fail twin:
+// another camera's trace is not it.
+TEST(BackgroundTrace, FinishedTraceIsTheTracersImage) {
+  Scene scene = builtinScene("default");
+  BackgroundTrace trace;
+  trace.start(scene, 48, 27, 4);
+  ASSERT_TRUE(collectWhenDone(trace)) << trace.error();
+  EXPECT_EQ(trace.state(), BackgroundTrace::State::Ready);
+  EXPECT_FALSE(trace.collect());  // once per trace
+  TraceSettings settings;
+  settings.width = 48;
+  settings.height = 27;
+  settings.samplesPerPixel = 4;
+  ImageU8 expected = encodeSrgb8(RayTracer(scene).render(settings).image);
+  EXPECT_EQ(trace.image().pixels, expected.pixels);
+  Scene moved = scene;
+  moved.camera.eye.x += 1.0f;
+  trace.start(moved, 48, 27, 4);
+  ASSERT_TRUE(collectWhenDone(trace)) << trace.error();
+  EXPECT_NE(trace.image().pixels, expected.pixels);
+}
+
+// A stale trace (the camera moved on) is cancelled: nothing is handed over,
+// and the next one runs to the end.
+TEST(BackgroundTrace, CancelledTraceHandsNothingOver) {
+  Scene scene = builtinScene("default");
+  BackgroundTrace trace;
+  trace.start(scene, 1280, 720, 64);  // minutes if it ran: cancel must stop it
+  trace.cancel();
+  EXPECT_EQ(trace.state(), BackgroundTrace::State::Idle);
+  EXPECT_FALSE(trace.collect());
+  trace.start(scene, 1280, 720, 64);
+  trace.start(scene, 16, 9, 1);  // replaces the running one
+  ASSERT_TRUE(collectWhenDone(trace)) << trace.error();
+  EXPECT_EQ(trace.image().width, 16u);
+  EXPECT_EQ(trace.progress(), 1.0f);
 }
 
 // Every row of the shader table, the ones compiled with defines included.

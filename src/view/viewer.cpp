@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -132,10 +133,12 @@ void Viewer::run() {
     // rebuilt first), or an idle tick while minimised.
     bool presented = !minimized_ && drawFrame();
     if (framesToRun_ > 0 && (presented || minimized_)) --framesToRun_;
+    if (waitingForReference_) waitForReference();
   }
   RenderStats stats;
   renderer_.finishFrames(stats);
   for (SlotWork& work : slotWork_) finishSlotWork(work);
+  reference_.cancel();
   std::vector<double> device(deviceMs_.begin(), deviceMs_.end());
   std::vector<double> frameDevice(frameDeviceMs_.begin(), frameDeviceMs_.end());
   std::vector<double> wall(wallMs_.begin(), wallMs_.end());
@@ -163,6 +166,7 @@ bool Viewer::applySettings(const FrameSettings& next) {
     return false;
   }
   settings_ = next;
+  referenceMeasured_ = false;  // the columns changed: measure them again
   return true;
 }
 
@@ -241,6 +245,11 @@ void Viewer::runStep(const ScriptStep& step) {
                   static_cast<unsigned long long>(framesDrawn_));
       std::fflush(stdout);
       break;
+    case ScriptStep::Kind::WaitReference:
+      // Checked after this frame's events, which may hold the script's X.
+      waitingForReference_ = true;
+      framesToRun_ = 1;
+      break;
     case ScriptStep::Kind::Quit:
       quit_ = true;
       break;
@@ -316,14 +325,21 @@ bool Viewer::drawFrame() {
 
   VkExtent2D extent = swapchain_.extent();
   scene_.camera = camera_.camera();
+  updateReference();
   VkCommandBuffer cmd = renderer_.beginFrame();
   RenderStats counts;
   renderer_.recordScene(gpuScene_, scene_, counts);
   submittedTriangles_ = counts.triangles;
 
   SlotWork& work = slotWork_[slot];
+  // Against Phong, every metricsInterval frames; against a traced reference,
+  // once per reference and settings (FLIP per column costs more than RMSE).
+  bool againstReference =
+      measureAgainstReference_ && reference_.state() == BackgroundTrace::State::Ready;
   bool metricsDue = !settings_.splitModels.empty() &&
-                    (splitErrors_.empty() || framesDrawn_ % options_.metricsInterval == 0);
+                    (againstReference ? !referenceMeasured_
+                                      : splitErrors_.empty() || splitErrorsAgainstReference_ ||
+                                            framesDrawn_ % options_.metricsInterval == 0);
   if (metricsDue) {
     VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 8;
     if (!work.metrics || work.metrics.size() < bytes)
@@ -332,6 +348,7 @@ bool Viewer::drawFrame() {
     renderer_.recordReadback(work.metrics);
     work.metricsPending = true;
     work.metricsSettings = settings_;
+    work.metricsView = referenceView();
   }
   VkImage image = swapchain_.image(imageIndex);
   recordBlitToSwapchain(cmd, renderer_.colorTarget(), renderer_.colorTargetUse(), image, extent);
@@ -404,8 +421,9 @@ void Viewer::finishSlotWork(SlotWork& work) {
   }
 }
 
-// Each split-screen column against the Phong column: the same camera and
-// view, so the difference is the shading model's alone.
+// Each split-screen column against the traced reference (X, once it is
+// ready for the view the frame shows) or else against the Phong column: the
+// same camera and view, so the difference is the shading model's alone.
 void Viewer::computeSplitErrors(const SlotWork& work) {
   const FrameSettings& used = work.metricsSettings;
   ImageU8 frame = encodeSrgb8(unpackHalfImage(work.metrics.mapped(), used.width, used.height));
@@ -414,6 +432,32 @@ void Viewer::computeSplitErrors(const SlotWork& work) {
   auto column = [&](size_t i, uint32_t width) {
     return cropColumns(frame, columns[i].left, width);
   };
+  if (measureAgainstReference_ && reference_.state() == BackgroundTrace::State::Ready &&
+      work.metricsView && work.metricsView == referenceRequested_) {
+    if (referenceMeasured_) return;  // the other frame in flight measured the same
+    const ImageU8& reference = reference_.image();
+    splitErrors_.clear();
+    std::string line = "split-screen error against the traced reference (" +
+                       std::to_string(reference.width) + "x" + std::to_string(reference.height) +
+                       ", " + std::to_string(options_.referenceSamplesPerPixel) + " spp):";
+    for (size_t i = 0; i < models.size(); ++i) {
+      ImageU8 image = column(i, reference.width);
+      ImageDifference difference = compareImages(reference, image);
+      double flip = flipError(reference, image).mean;
+      splitErrors_.push_back({models[i], difference, flip});
+      char text[128];
+      std::snprintf(text, sizeof(text), " %s FLIP %.4f RMSE %.3f PSNR %.2f dB;",
+                    std::string(shadingModelName(models[i])).c_str(), flip, difference.rmse,
+                    difference.psnr);
+      line += text;
+    }
+    splitErrorsAgainstReference_ = true;
+    referenceMeasured_ = true;
+    // Logged once per reference and settings; the overlay shows them.
+    std::printf("view: %s\n", line.c_str());
+    std::fflush(stdout);
+    return;
+  }
   auto phong = std::find(models.begin(), models.end(), ShadingModel::Phong);
   if (phong == models.end()) return;
   size_t reference = size_t(phong - models.begin());
@@ -421,13 +465,14 @@ void Viewer::computeSplitErrors(const SlotWork& work) {
   // the first column's width.
   uint32_t width = columns[0].width;
   ImageU8 referenceImage = column(reference, width);
-  bool first = splitErrors_.empty();
+  bool first = splitErrors_.empty() || splitErrorsAgainstReference_;
   splitErrors_.clear();
+  splitErrorsAgainstReference_ = false;
   std::string line = "split-screen error against phong:";
   for (size_t i = 0; i < models.size(); ++i) {
     if (i == reference) continue;
     ImageDifference difference = compareImages(referenceImage, column(i, width));
-    splitErrors_.push_back({models[i], difference});
+    splitErrors_.push_back({models[i], difference, std::nullopt});
     char text[96];
     std::snprintf(text, sizeof(text), " %s RMSE %.3f PSNR %.2f dB;",
                   std::string(shadingModelName(models[i])).c_str(), difference.rmse,
@@ -436,6 +481,90 @@ void Viewer::computeSplitErrors(const SlotWork& work) {
   }
   // Logged once per split-screen session; the overlay shows every update.
   if (first) std::printf("view: %s\n", line.c_str());
+}
+
+std::optional<Viewer::ReferenceView> Viewer::referenceView() const {
+  if (settings_.splitModels.empty()) return std::nullopt;
+  const uint32_t count = uint32_t(settings_.splitModels.size());
+  const Camera& camera = scene_.camera;
+  // The renderer's projection of a column (recordScene): the frame's width
+  // over the columns. The tracer's aspect is the traced width's, the same
+  // when the window's width divides by the columns.
+  float aspect = float(settings_.width) / float(count) / float(settings_.height);
+  return ReferenceView{camera.viewMatrix(), camera.projectionMatrix(aspect),
+                       splitColumns(settings_.width, count)[0].width, settings_.height,
+                       renderer_.uploadCount()};
+}
+
+void Viewer::updateReference() {
+  if (!measureAgainstReference_) return;
+  if (reference_.collect()) {
+    referenceMeasured_ = false;  // new: measure the columns against it
+    char text[128];
+    std::snprintf(text, sizeof(text), "reference traced in %.2f s (%ux%u, %u spp)",
+                  reference_.seconds(), reference_.image().width, reference_.image().height,
+                  options_.referenceSamplesPerPixel);
+    say(text);
+  }
+  if (reference_.state() == BackgroundTrace::State::Idle && !reference_.error().empty() &&
+      message_.find(reference_.error()) == std::string::npos)
+    say("reference: " + reference_.error(), true);
+  std::optional<ReferenceView> view = referenceView();
+  bool stopped = view && view == previousView_;
+  previousView_ = view;
+  if (view == referenceRequested_) return;  // traced, or being traced, for this view
+  // The view moved on: what is traced or being traced is stale.
+  if (reference_.state() != BackgroundTrace::State::Idle) reference_.cancel();
+  referenceRequested_.reset();
+  referenceMeasured_ = false;
+  if (!stopped) return;  // no trace per frame of a drag: wait until the camera rests
+  reference_.start(scene_, view->width, view->height, options_.referenceSamplesPerPixel);
+  referenceRequested_ = view;
+}
+
+void Viewer::setMeasureAgainstReference(bool on) {
+  measureAgainstReference_ = on;
+  referenceRequested_.reset();
+  previousView_.reset();
+  referenceMeasured_ = false;
+  splitErrors_.clear();
+  if (!on) reference_.cancel();
+}
+
+// The script's wait-reference: frames until the split columns have been
+// measured against a finished trace, sleeping a little each loop so that the
+// trace thread gets the cores.
+void Viewer::waitForReference() {
+  bool failed = reference_.state() == BackgroundTrace::State::Idle && !reference_.error().empty();
+  if (!measureAgainstReference_) say("wait-reference: X is off, no reference to wait for", true);
+  if (referenceMeasured_ || !measureAgainstReference_ || failed) {
+    waitingForReference_ = false;
+    return;
+  }
+  framesToRun_ = std::max(framesToRun_, 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(10));
+}
+
+std::string Viewer::referenceStatus() const {
+  if (settings_.splitModels.empty()) return "reference: split screen is off (C)";
+  char text[160];
+  switch (reference_.state()) {
+    case BackgroundTrace::State::Tracing:
+      std::snprintf(text, sizeof(text),
+                    "reference: tracing %d%% (%ux%u, %u spp, in the background)",
+                    int(reference_.progress() * 100.0f + 0.5f), referenceRequested_->width,
+                    referenceRequested_->height, options_.referenceSamplesPerPixel);
+      return text;
+    case BackgroundTrace::State::Ready:
+      std::snprintf(text, sizeof(text), "reference: ready, traced in %.2f s (%ux%u, %u spp)",
+                    reference_.seconds(), reference_.image().width, reference_.image().height,
+                    options_.referenceSamplesPerPixel);
+      return text;
+    case BackgroundTrace::State::Idle:
+      break;
+  }
+  if (!reference_.error().empty()) return "reference: failed: " + reference_.error();
+  return "reference: waiting for the camera to rest";
 }
 
 }  // namespace shadelab

@@ -17,6 +17,7 @@
 #include "core/vulkan/context.h"
 #include "core/vulkan/gpu_scene.h"
 #include "passes/renderer.h"
+#include "view/background_trace.h"
 #include "view/camera_controller.h"
 #include "view/overlay.h"
 #include "view/swapchain.h"
@@ -33,6 +34,7 @@ struct ViewerOptions {
   std::optional<std::vector<ScriptStep>> script;  // none: interactive
   std::filesystem::path shaderDirectory;          // where R reloads GLSL from
   uint32_t metricsInterval = 30;                  // frames between split-screen error readbacks
+  uint32_t referenceSamplesPerPixel = 4;          // X's traced reference, as compare's default
   FrameSettings initial;                          // model, MSAA, ...; the size follows the window
   float tessellation = 1.0f;                      // as render --tess; T and G change it
   bool autoTessellation = false;  // --tess auto: tessellate for the initial view (as A does)
@@ -62,6 +64,14 @@ class Viewer {
   static std::vector<std::string> keyNames();
 
  private:
+  // What a split column shows and the reference must be traced for: the
+  // camera's matrices, the first (narrowest) column's size, the scene's upload.
+  struct ReferenceView {
+    glm::mat4 view{1.0f}, projection{1.0f};
+    uint32_t width = 0, height = 0;
+    uint32_t upload = 0;
+    bool operator==(const ReferenceView&) const = default;
+  };
   // What a frame slot still has to do once its fence has signalled.
   struct SlotWork {
     Buffer screenshot;
@@ -70,6 +80,13 @@ class Viewer {
     Buffer metrics;
     bool metricsPending = false;
     FrameSettings metricsSettings;
+    std::optional<ReferenceView> metricsView;  // the reference's view when the frame was drawn
+  };
+  // One split column's error against the Phong column or the traced reference.
+  struct SplitError {
+    ShadingModel model;
+    ImageDifference difference;
+    std::optional<double> flip;  // against the reference only (FLIP costs more)
   };
 
   bool advanceScript();
@@ -80,6 +97,15 @@ class Viewer {
   void recreateSwapchain();
   void finishSlotWork(SlotWork& work);
   void computeSplitErrors(const SlotWork& work);
+  // The split screen's current view as the reference sees it; none with split screen off.
+  std::optional<ReferenceView> referenceView() const;
+  // Per frame with X on: collects a finished trace, cancels a stale one and
+  // starts one for the view once the camera has stopped (the same view two
+  // frames running).
+  void updateReference();
+  void setMeasureAgainstReference(bool on);
+  void waitForReference();
+  std::string referenceStatus() const;
   OverlayText overlayText() const;
   void say(const std::string& message, bool error = false);
   void notAvailable(const std::string& feature);
@@ -127,7 +153,15 @@ class Viewer {
   uint64_t framesDrawn_ = 0;
   uint64_t submittedTriangles_ = 0;  // last frame, after frustum culling, per view
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;
-  std::vector<std::pair<ShadingModel, ImageDifference>> splitErrors_;
+  std::vector<SplitError> splitErrors_;
+  bool splitErrorsAgainstReference_ = false;
+  // X: split-screen errors against the traced reference instead of Phong.
+  bool measureAgainstReference_ = false;
+  BackgroundTrace reference_;
+  std::optional<ReferenceView> referenceRequested_;  // the view traced or being traced
+  std::optional<ReferenceView> previousView_;        // last frame's, to see the camera stop
+  bool referenceMeasured_ = false;    // errors against the current reference computed
+  bool waitingForReference_ = false;  // script step wait-reference
   std::string message_;
   bool messageIsError_ = false;
   std::string screenshotRequest_;

@@ -80,6 +80,22 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
          v.splitErrors_.clear();
          v.say(on ? "split screen on" : "split screen off");
        }},
+      {'X', "X",
+       "split-screen errors against the traced reference (traced in the background, again "
+       "when the view changes) / against Phong",
+       [](Viewer& v) {
+         bool on = !v.measureAgainstReference_;
+         if (on && v.settings_.splitModels.empty()) {
+           FrameSettings next = v.settings_;
+           next.splitModels = {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong,
+                               ShadingModel::BlinnPhong};
+           if (!v.applySettings(next)) return;
+         }
+         v.setMeasureAgainstReference(on);
+         v.say(on ? "split screen: errors against the traced reference (tracing in the "
+                    "background once the camera rests)"
+                  : "split screen: errors against phong");
+       }},
       {'W', "W", "wireframe overlay",
        [](Viewer& v) {
          if (!v.context_.features().fillModeNonSolid)
@@ -270,9 +286,15 @@ OverlayText Viewer::overlayText() const {
       textures.filterOverride ? textureFilterName(*textures.filterOverride) : "own",
       textures.mipTint ? "on" : "off");
   text.status.push_back(line);
-  for (const auto& [model, difference] : splitErrors_) {
-    std::snprintf(line, sizeof(line), "%-12s vs phong: RMSE %5.2f  PSNR %5.1f dB",
-                  std::string(shadingModelName(model)).c_str(), difference.rmse, difference.psnr);
+  if (measureAgainstReference_) text.status.push_back(referenceStatus());
+  for (const SplitError& error : splitErrors_) {
+    std::string model(shadingModelName(error.model));
+    if (error.flip)
+      std::snprintf(line, sizeof(line), "%-12s vs reference: FLIP %.4f  RMSE %5.2f  PSNR %5.1f dB",
+                    model.c_str(), *error.flip, error.difference.rmse, error.difference.psnr);
+    else
+      std::snprintf(line, sizeof(line), "%-12s vs phong: RMSE %5.2f  PSNR %5.1f dB", model.c_str(),
+                    error.difference.rmse, error.difference.psnr);
     text.status.push_back(line);
   }
   text.status.push_back("H help");

@@ -104,6 +104,7 @@ ScriptStep parseLine(const LineReader& reader, const std::vector<std::string>& k
         {"minimize", ScriptStep::Kind::Minimize},
         {"restore", ScriptStep::Kind::Restore},
         {"memory", ScriptStep::Kind::Memory},
+        {"wait-reference", ScriptStep::Kind::WaitReference},
         {"quit", ScriptStep::Kind::Quit}};
     for (const auto& [name, kind] : bare) {
       if (command != name) continue;
@@ -113,7 +114,7 @@ ScriptStep parseLine(const LineReader& reader, const std::vector<std::string>& k
     }
     reader.fail(
         "a step: key, frames, drag, scroll, resize, minimize, restore, screenshot, "
-        "memory or quit");
+        "memory, wait-reference or quit");
   }
   return step;
 }

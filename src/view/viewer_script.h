@@ -8,6 +8,8 @@
 //   minimize / restore
 //   screenshot FILE.png    the next presented frame, as presented
 //   memory                 print resident memory (VmRSS) and the frame count
+//   wait-reference         draw frames until the split screen's traced
+//                          reference (key X) is ready and measured
 //   quit
 // '#' starts a comment. The session ends after the last step.
 #include <filesystem>
@@ -29,6 +31,7 @@ struct ScriptStep {
     Restore,
     Screenshot,
     Memory,
+    WaitReference,
     Quit
   };
   Kind kind = Kind::Quit;

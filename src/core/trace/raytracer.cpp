@@ -548,6 +548,7 @@ TraceResult RayTracer::render(const TraceSettings& settings) const {
   auto work = [&](TraceStats& stats, bool reports) {
     uint32_t reported = 0;  // hundredths
     for (uint32_t y = nextRow++; y < settings.height; y = nextRow++) {
+      if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
       for (uint32_t x = 0; x < settings.width; ++x)
         result.image.set(x, y, glm::vec4(tracePixel(camera, x, y, grid, settings, stats), 1.0f));
       const uint32_t hundredths = uint32_t(100ull * ++rowsDone / settings.height);

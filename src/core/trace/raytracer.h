@@ -20,6 +20,7 @@
 // Textures (diffuse, normal and height maps) are sampled as the textured
 // forward shaders sample them, filtered over the ray's footprint
 // (core/trace/trace_material.h); rays that miss see the environment.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -60,9 +61,13 @@ struct TraceSettings {
   // kr and kt are fixed weights and shadow rays pass kt per surface, as the
   // tracer did before issue 16; kept to measure what Fresnel changes.
   bool fresnel = true;
-  // Called on the calling thread at each further tenth of the rows done,
+  // Called on the calling thread at each further hundredth of the rows done,
   // and with 1 at the end; empty: no reports.
   std::function<void(float fraction)> progress;
+  // When set and it turns true, no further row is started and render()
+  // returns early with the rows not reached left black (the viewer's
+  // background reference, cancelled when the camera moves on).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct TraceStats {
