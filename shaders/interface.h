@@ -56,6 +56,10 @@ using mat4 = glm::mat4;
 // early depth testing) and no extra branch.
 #define SPEC_ALPHA_MASK 9
 #define SPEC_DOUBLE_SIDED 10
+// Bit i set: FrameData::lights[i] casts shadows (its JSON "shadows"). A
+// constant, so a light without shadows has no lookup at all: llvmpipe runs
+// both sides of a branch, even a uniform one, and paid for it regardless.
+#define SPEC_SHADOWED_LIGHTS 11
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2

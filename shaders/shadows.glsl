@@ -16,6 +16,7 @@
 #include "common.glsl"
 
 layout(constant_id = SPEC_SHADOW_FILTER) const int shadowFilter = SHADOW_OFF;
+layout(constant_id = SPEC_SHADOWED_LIGHTS) const int shadowedLights = 0xff;
 
 #ifdef SHADOW_LOOKUP
 layout(set = 0, binding = BINDING_SHADOWS, std140) uniform ShadowBlock { ShadowData shadows; };
@@ -28,6 +29,7 @@ const bool shadowsLookedUp = shadowFilter != SHADOW_OFF;
 // (the light loops are unrolled), and the fragment's own choices (cube face,
 // inside the map or not) are selects, not branches or indexed loads.
 float shadowCoefficient(int i, vec3 position, vec3 N, vec3 L) {
+  if ((shadowedLights & (1 << i)) == 0) return 1.0;  // folded away per unrolled light
   vec4 light = shadows.lights[i];
   if (light.x < 0.0 || draw.object.z == 0) return 1.0;  // the same for the whole draw
   bool point = i < pointLightCount;

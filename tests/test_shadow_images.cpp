@@ -8,6 +8,7 @@
 #include "core/scene/lighting.h"
 #include "core/scene/transform.h"
 #include "core/trace/raytracer.h"
+#include "core/vulkan/gpu_scene.h"
 #include "gpu_test_support.h"
 #include "measure/shadow_study.h"
 
@@ -111,6 +112,33 @@ TwinAgreement compareWithTwin(Renderer& renderer, const Scene& scene, bool useSh
       result.agreeing += glm::all(glm::lessThan(glm::abs(actual - expected), glm::vec3(0.01f)));
     }
   return result;
+}
+
+// The lights that cast shadows are a specialization constant (bit i: the
+// i-th light in FrameData's order, point lights first): a light whose JSON
+// says "shadows": false has no lookup compiled at all.
+TEST(ShadowedLights, LayoutMarksThemInFrameOrder) {
+  Scene scene = builtinScene("shadows");  // a directional light, then a point light
+  ASSERT_EQ(scene.lights.size(), 2u);
+  EXPECT_EQ(lightLayoutOf(scene).shadowed, 0b11u);
+  scene.lights[0].shadows = false;  // the directional light: slot 1, after the point light
+  EXPECT_EQ(lightLayoutOf(scene).shadowed, 0b01u);
+  scene.lights[1].shadows = false;
+  EXPECT_EQ(lightLayoutOf(scene).shadowed, 0u);
+}
+
+// With every light's shadows off in the scene, shadow maps on draw exactly
+// the frame without them; with one left on, not (the sun's shadows stay).
+TEST_F(ShadowImages, LightsWithoutShadowsAreLitAsWithShadowsOff) {
+  Scene scene = builtinScene("shadows");
+  ImageU8 unshadowed = render(scene, shadowed(ShadowMethod::Off));
+  Scene noneCast = scene;
+  for (Light& light : noneCast.lights) light.shadows = false;
+  ImageU8 none = render(noneCast, shadowed(ShadowMethod::Hard));
+  EXPECT_EQ(none.pixels, unshadowed.pixels);
+  Scene sunCasts = noneCast;
+  sunCasts.lights[0].shadows = true;
+  EXPECT_NE(render(sunCasts, shadowed(ShadowMethod::Hard)).pixels, unshadowed.pixels);
 }
 
 TEST_F(ShadowImages, GpuShadowTermAgreesWithTheCppTwin) {

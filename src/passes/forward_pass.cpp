@@ -161,6 +161,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
     int32_t shadowFilter;
     VkBool32 alphaMask;
     VkBool32 doubleSided;
+    int32_t shadowedLights;
   } constants{int32_t(model),
               int32_t(lights.point),
               int32_t(lights.directional),
@@ -168,7 +169,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
               environment ? VK_TRUE : VK_FALSE,
               int32_t(shadows),
               masked ? VK_TRUE : VK_FALSE,
-              doubleSided ? VK_TRUE : VK_FALSE};
+              doubleSided ? VK_TRUE : VK_FALSE,
+              int32_t(lights.shadowed)};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -180,6 +182,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
       {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(decltype(constants), shadowFilter), 4},
       {/* constantID= */ SPEC_ALPHA_MASK, offsetof(decltype(constants), alphaMask), 4},
       {/* constantID= */ SPEC_DOUBLE_SIDED, offsetof(decltype(constants), doubleSided), 4},
+      {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(decltype(constants), shadowedLights), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};

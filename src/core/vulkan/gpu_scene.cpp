@@ -196,6 +196,14 @@ LightLayout lightLayoutOf(const Scene& scene) {
     if (light.type == LightType::Point && light.attenuation != glm::vec3(1.0f, 0.0f, 0.0f))
       layout.attenuated = true;
   }
+  // In FrameData's order: point lights first, then directional ones.
+  uint32_t slot = 0;
+  for (LightType type : {LightType::Point, LightType::Directional})
+    for (size_t i = 0; i < count; ++i)
+      if (scene.lights[i].type == type) {
+        if (scene.lights[i].shadows) layout.shadowed |= 1u << slot;
+        ++slot;
+      }
   return layout;
 }
 

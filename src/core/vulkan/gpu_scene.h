@@ -43,6 +43,7 @@ struct LightLayout {
   uint32_t point = 0;
   uint32_t directional = 0;
   bool attenuated = false;  // some point light has attenuation other than (1, 0, 0)
+  uint32_t shadowed = 0;    // bit i: FrameData::lights[i] casts shadows (SPEC_SHADOWED_LIGHTS)
   uint32_t total() const { return point + directional; }
   auto operator<=>(const LightLayout&) const = default;
 };
