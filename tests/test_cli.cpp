@@ -992,6 +992,8 @@ TEST_F(Cli, BenchSweepsFrameSizesAndLightCounts) {
   EXPECT_EQ(rows[8][1], "256");
   EXPECT_EQ(rows[8].back(), "8");
   EXPECT_EQ(pngSize(out("sl/scaling.png")), std::make_pair(1040u, 420u)) << "two panels";
+  EXPECT_FALSE(std::filesystem::exists(out("sl/error_vs_time.png"))) << "no error, no error chart";
+  EXPECT_FALSE(std::filesystem::exists(out("sl/error_vs_triangles.png")));
   expectDrawnChart(out("sl/scaling.png"));
   for (const char* bad : {"--lights 9", "--lights 0", "--lights two", "--size 64x36,0x5"}) {
     CommandResult refused = run("bench default -o " + out("bad") + " " + bad);

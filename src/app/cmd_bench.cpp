@@ -213,13 +213,18 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   OutputGroup outputs(folder);
   outputs.add(folder / "results.csv",
               [&] { writeTextFile(folder / "results.csv", benchCsv(results, bench, scene.name)); });
-  outputs.add(folder / "error_vs_time.png", [&] {
-    writeImage(errorTimeChart(results, chartedIndex, charted, title), folder / "error_vs_time.png");
-  });
-  outputs.add(folder / "error_vs_triangles.png", [&] {
-    writeImage(errorTriangleChart(results, chartedIndex, charted, title),
-               folder / "error_vs_triangles.png");
-  });
+  // The error charts only when errors were measured (not with --reference none).
+  bool measured = bool(bench.reference.render);
+  if (measured) {
+    outputs.add(folder / "error_vs_time.png", [&] {
+      writeImage(errorTimeChart(results, chartedIndex, charted, title),
+                 folder / "error_vs_time.png");
+    });
+    outputs.add(folder / "error_vs_triangles.png", [&] {
+      writeImage(errorTriangleChart(results, chartedIndex, charted, title),
+                 folder / "error_vs_triangles.png");
+    });
+  }
   ImageU8 scaling = scalingChart(results, "Scene " + scene.name);
   if (scaling.width > 0)
     outputs.add(folder / "scaling.png", [&] { writeImage(scaling, folder / "scaling.png"); });
@@ -228,9 +233,9 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   bool showFrame = axes.sizes.size() > 1 || axes.lights != std::vector<uint32_t>{0};
   printResults(results, charted, chartedIndex, showFrame, out);
   std::fprintf(out,
-               "device medians over %zu steady frames per setting; wrote %s/{results.csv, "
-               "error_vs_time.png, error_vs_triangles.png%s}\n",
+               "device medians over %zu steady frames per setting; wrote %s/{results.csv%s%s}\n",
                results.empty() ? size_t(0) : results.front().frames, folder.c_str(),
+               measured ? ", error_vs_time.png, error_vs_triangles.png" : "",
                scaling.width > 0 ? ", scaling.png" : "");
   nlohmann::json json = {{"scene", scene.name},
                          {"settings",
@@ -241,10 +246,11 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
                            {"reference", bench.reference.name},
                            {"charted_metric", charted.name}}},
                          {"results", nlohmann::json::array()},
-                         {"outputs",
-                          {{"csv", jsonPath(folder / "results.csv")},
-                           {"error_vs_time", jsonPath(folder / "error_vs_time.png")},
-                           {"error_vs_triangles", jsonPath(folder / "error_vs_triangles.png")}}}};
+                         {"outputs", {{"csv", jsonPath(folder / "results.csv")}}}};
+  if (measured) {
+    json["outputs"]["error_vs_time"] = jsonPath(folder / "error_vs_time.png");
+    json["outputs"]["error_vs_triangles"] = jsonPath(folder / "error_vs_triangles.png");
+  }
   if (scaling.width > 0) json["outputs"]["scaling"] = jsonPath(folder / "scaling.png");
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, chartedIndex), chartedIndex, charted);
