@@ -14,10 +14,8 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
-// `environment` is prefixed to the command line (e.g. "cd DIR && VAR=1").
-inline CommandResult run(const std::string& arguments, const std::string& environment = "") {
-  std::string command =
-      environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1";
+// Runs a shell command line as given (add 2>&1 to capture stderr too).
+inline CommandResult runShell(const std::string& command) {
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
@@ -28,6 +26,11 @@ inline CommandResult run(const std::string& arguments, const std::string& enviro
   int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+// `environment` is prefixed to the command line (e.g. "cd DIR && VAR=1").
+inline CommandResult run(const std::string& arguments, const std::string& environment = "") {
+  return runShell(environment + " " + std::string(SHADELAB_BINARY) + " " + arguments + " 2>&1");
 }
 
 }  // namespace shadelab::test

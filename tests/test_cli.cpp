@@ -25,6 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using shadelab::test::CommandResult;
 using shadelab::test::run;
+using shadelab::test::runShell;
 
 class Cli : public ::testing::Test {
  protected:
@@ -1021,17 +1022,8 @@ TEST_F(Cli, ProgressAndEtaShowOnATerminalOnly) {
     EXPECT_EQ(piped.output.find("round 1/2"), std::string::npos) << piped.output;
   }
   auto onTerminal = [](const std::string& arguments) {
-    std::string command =
-        "script -qec '" + std::string(SHADELAB_BINARY) + " " + arguments + "' /dev/null 2>&1";
-    CommandResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
-    int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
+    return runShell("script -qec '" + std::string(SHADELAB_BINARY) + " " + arguments +
+                    "' /dev/null 2>&1");
   };
   CommandResult traced = onTerminal(trace);
   ASSERT_EQ(traced.exitCode, 0) << traced.output;
