@@ -31,13 +31,14 @@ cat3ds=/usr/share/glmark2/models/cat.3ds
 [ -f "$cat3ds" ] || { echo "peer_bench: $cat3ds missing (apt install glmark2-data)" >&2; exit 2; }
 python3 scripts/glmark2_model.py "$cat3ds" "$work/cat.gltf" >&2
 # glmark2's view: the model 5 units in front of the eye, a 60 degree field of
-# view; one point light as glmark2's Phong has it (eye-space (0, 1, 0), 0.8).
+# view; one point light as glmark2's Phong has it (eye-space (0, 1, 0), 0.8),
+# casting no shadow: glmark2's shading scene has none.
 cat > "$work/cat.json" <<'JSON'
 {
   "camera": {"eye": [0, 0, 5], "at": [0, 0, 0], "fovy": 60, "near": 1, "far": 1024},
   "ambient": 0.1,
   "background": 0,
-  "lights": [{"type": "point", "position": [0, 1, 5], "intensity": 0.8}],
+  "lights": [{"type": "point", "position": [0, 1, 5], "intensity": 0.8, "shadows": false}],
   "objects": [{"name": "glmark2's cat", "gltf": "cat.gltf",
                "transform": [{"rotate": {"axis": [0, 1, 0], "degrees": 54}}]}]
 }
