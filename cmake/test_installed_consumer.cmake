@@ -5,7 +5,10 @@
 # through the library is byte-identical to the installed shadelab binary's
 # `render` of the same scene and settings (shadows off: the library's
 # FrameSettings default, where the CLI defaults to pcf3).
-# cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DBUILD_TYPE=... [-DVALIDATE=ON] -P this
+# With SANITIZE (the asan preset) the installed libraries hold ASan and UBSan
+# calls, so the consumer is compiled and linked with the same sanitizers.
+# cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DBUILD_TYPE=... [-DVALIDATE=ON]
+#       [-DSANITIZE=ON] -P this
 foreach(var BUILD_DIR SOURCE_DIR WORK_DIR BUILD_TYPE)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "test_installed_consumer.cmake: -D${var}=... is required")
@@ -21,6 +24,10 @@ function(run_step what)
   set(step_output "${out}" PARENT_SCOPE)
 endfunction()
 
+set(sanitize_flags "")
+if(SANITIZE)
+  set(sanitize_flags -fsanitize=address,undefined)
+endif()
 set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
@@ -28,7 +35,8 @@ run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 
 # 1. CMake: find_package(shadelab CONFIG) and shadelab::shadelab.
 run_step("configure the consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/headless_capture
-         -B ${WORK_DIR}/consumer -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${BUILD_TYPE})
+         -B ${WORK_DIR}/consumer -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${BUILD_TYPE}
+         "-DCMAKE_CXX_FLAGS=${sanitize_flags}" "-DCMAKE_EXE_LINKER_FLAGS=${sanitize_flags}")
 run_step("build the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer)
 set(validate_flag "")
 if(VALIDATE)
@@ -74,7 +82,8 @@ run_step("pkg-config" ${PKG_CONFIG} --cflags --libs shadelab)
 string(STRIP "${step_output}" flags)
 separate_arguments(flags UNIX_COMMAND "${flags}")
 run_step("compile with pkg-config flags" ${CXX_COMPILER}
-         ${SOURCE_DIR}/examples/headless_capture/main.cpp -o ${WORK_DIR}/capture_pc ${flags})
+         ${SOURCE_DIR}/examples/headless_capture/main.cpp -o ${WORK_DIR}/capture_pc ${flags}
+         ${sanitize_flags})
 run_step("run the pkg-config build" ${WORK_DIR}/capture_pc ${WORK_DIR}/pc.png default
          --size 320x180 ${validate_flag})
 file(MD5 ${WORK_DIR}/pc.png pc_md5)
