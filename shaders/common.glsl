@@ -13,4 +13,15 @@ layout(constant_id = SPEC_DIRECTIONAL_LIGHTS) const int directionalLightCount = 
 layout(constant_id = SPEC_ATTENUATED_POINT_LIGHTS) const bool pointLightsAttenuate = true;
 layout(constant_id = SPEC_ALPHA_MASK) const bool alphaMask = false;
 layout(constant_id = SPEC_DOUBLE_SIDED) const bool doubleSided = false;
+layout(constant_id = SPEC_MATERIAL_CONSTANTS) const bool materialConstants = false;
+layout(constant_id = SPEC_MATERIAL_KA) const float materialKaR = 0.0;
+layout(constant_id = SPEC_MATERIAL_KA + 1) const float materialKaG = 0.0;
+layout(constant_id = SPEC_MATERIAL_KA + 2) const float materialKaB = 0.0;
+layout(constant_id = SPEC_MATERIAL_KD) const float materialKdR = 0.0;
+layout(constant_id = SPEC_MATERIAL_KD + 1) const float materialKdG = 0.0;
+layout(constant_id = SPEC_MATERIAL_KD + 2) const float materialKdB = 0.0;
+layout(constant_id = SPEC_MATERIAL_KS) const float materialKsR = 0.0;
+layout(constant_id = SPEC_MATERIAL_KS + 1) const float materialKsG = 0.0;
+layout(constant_id = SPEC_MATERIAL_KS + 2) const float materialKsB = 0.0;
+layout(constant_id = SPEC_MATERIAL_SHININESS) const float materialShininess = 0.0;
 #endif

@@ -105,7 +105,7 @@ void main() {
   vec3 color;
   vec3 normal = inNormal;
   if (shadingModel == SHADING_UNLIT) {
-    color = texel * draw.kd.rgb;
+    color = texel * drawMaterial().kd;
   } else {
     SurfaceMaterial material = drawMaterial();
     material.ka *= texel;
@@ -121,7 +121,7 @@ void main() {
   // doubleSided: a back face is lit as the front seen from behind.
   if (doubleSided && !gl_FrontFacing) normal = -normal;
   vec3 color = shadingModel == SHADING_UNLIT
-                   ? draw.kd.rgb
+                   ? drawMaterial().kd
                    : illuminate(inPosition, normal, drawMaterial(),
                                 shadingModel == SHADING_BLINN_PHONG);
   EnvironmentDirections environment = environmentDirections(inPosition, normal, draw.optics.z);

@@ -60,6 +60,15 @@ using mat4 = glm::mat4;
 // constant, so a light without shadows has no lookup at all: llvmpipe runs
 // both sides of a branch, even a uniform one, and paid for it regardless.
 #define SPEC_SHADOWED_LIGHTS 11
+// The draw's material compiled in (ForwardFrame::materialConstants): when
+// set, ka, kd, ks and n are these constants instead of DrawConstants' values.
+// llvmpipe loads a push-constant value per fragment at each use and folds a
+// constant into the code. Ids 13..22 hold the ten floats.
+#define SPEC_MATERIAL_CONSTANTS 12
+#define SPEC_MATERIAL_KA 13         // 13, 14, 15: r, g, b
+#define SPEC_MATERIAL_KD 16         // 16, 17, 18
+#define SPEC_MATERIAL_KS 19         // 19, 20, 21
+#define SPEC_MATERIAL_SHININESS 22  // n
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2

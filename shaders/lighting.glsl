@@ -22,7 +22,12 @@ struct SurfaceMaterial {
   float shininess;
 };
 
+// The draw's material: compiled in, or from its push constants (common.glsl).
 SurfaceMaterial drawMaterial() {
+  if (materialConstants)
+    return SurfaceMaterial(vec3(materialKaR, materialKaG, materialKaB),
+                           vec3(materialKdR, materialKdG, materialKdB),
+                           vec3(materialKsR, materialKsG, materialKsB), materialShininess);
   return SurfaceMaterial(draw.ka.rgb, draw.kd.rgb, draw.ks.rgb, draw.ks.w);
 }
 

@@ -270,6 +270,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.shadowMapSize = options.quality ? point.shadowMapSize : look.shadowMapSize;
     settings.shadowBias = look.shadowBias;
     settings.keepShadowMaps = look.keepShadowMaps;
+    settings.materialConstants = look.materialConstants;
     if (!cameras.empty())
       written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
     else

@@ -73,6 +73,12 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
   command->add_flag("--mip-tint", options.mipTint,
                     "Debug view: tint diffuse textures by the mip level sampled (0 white, 1 red, "
                     "2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, 7+ magenta)");
+  command
+      ->add_option("--material-constants", options.materialConstants,
+                   namedHelp("Compile each material into its own pipelines when the scene has at "
+                             "most 16 (faster; off: read from push constants)",
+                             kOnOffNames))
+      ->capture_default_str();
   options.shadows.add(command);
 }
 
@@ -82,6 +88,8 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
     settings.textures.filterOverride = parseNamed(kTextureFilterNames, options.filter, "--filter");
   settings.textures.bump = parseNamed(kOnOffNames, options.bump, "--bump");
   settings.textures.mipTint = options.mipTint;
+  settings.materialConstants =
+      parseNamed(kOnOffNames, options.materialConstants, "--material-constants");
   options.shadows.apply(settings);
 }
 

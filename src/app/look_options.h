@@ -30,6 +30,7 @@ struct LookOptions {
   std::string filter;  // empty: each material's own sampler
   std::string bump = "on";
   bool mipTint = false;
+  std::string materialConstants = "on";  // --material-constants
   ShadowOptions shadows;  // --shadows, --shadow-size, the bias options
 };
 

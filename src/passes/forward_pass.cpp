@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cassert>
 #include <cstddef>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <vector>
 
@@ -123,35 +125,55 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
   for (auto& [variant, pipeline] : pipelines_) pipeline = createPipeline(variant);
 }
 
-void ForwardPass::prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
-                          bool environment, ShadowMethod shadows, bool masked, bool doubleSided) {
-  for (int model = 0; model < kShadingModelCount; ++model)
-    for (bool texturedVariant : {false, true})
-      for (bool blendedVariant : {false, true})
-        for (bool maskedVariant : {false, true})
-          for (bool doubleSidedVariant : {false, true}) {
-            ForwardVariant key{.model = ShadingModel(model),
-                               .lights = lights,
-                               .target = target,
-                               .textured = texturedVariant,
-                               .blended = blendedVariant,
-                               .environment = environment,
-                               .shadows = shadows,
-                               .masked = maskedVariant,
-                               .doubleSided = doubleSidedVariant};
-            bool needed = (!texturedVariant || textured) && (!blendedVariant || blended) &&
-                          (!maskedVariant || masked) && (!doubleSidedVariant || doubleSided);
-            if (needed && !pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-          }
-  ForwardVariant wireframe{
-      .model = ShadingModel::Unlit, .lights = lights, .target = target, .wireframe = true};
-  if (context_.features().fillModeNonSolid && !pipelines_.count(wireframe))
-    pipelines_[wireframe] = createPipeline(wireframe);
+// A draw's ka, kd, ks and n as bit patterns: equal keys, equal constants.
+static std::array<uint32_t, 10> materialBits(const gpu::DrawConstants& constants) {
+  glm::vec3 ka(constants.ka), kd(constants.kd), ks(constants.ks);
+  return {std::bit_cast<uint32_t>(ka.r), std::bit_cast<uint32_t>(ka.g),
+          std::bit_cast<uint32_t>(ka.b), std::bit_cast<uint32_t>(kd.r),
+          std::bit_cast<uint32_t>(kd.g), std::bit_cast<uint32_t>(kd.b),
+          std::bit_cast<uint32_t>(ks.r), std::bit_cast<uint32_t>(ks.g),
+          std::bit_cast<uint32_t>(ks.b), std::bit_cast<uint32_t>(constants.ks.w)};
+}
+
+size_t ForwardPass::materialCount(const GpuScene& scene) {
+  std::set<std::array<uint32_t, 10>> materials;
+  for (const DrawItem& draw : scene.draws) materials.insert(materialBits(draw.constants));
+  return materials.size();
+}
+
+ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& frame,
+                                      const GpuScene& scene, const DrawItem& draw) {
+  ForwardVariant variant{.model = model,
+                         .lights = scene.lights,
+                         .target = frame.target,
+                         .textured = draw.textured,
+                         .blended = draw.transparent,
+                         .environment = frame.environment,
+                         .shadows = frame.shadows,
+                         .masked = draw.masked,
+                         .doubleSided = draw.doubleSided};
+  if (frame.materialConstants) variant.material = materialBits(draw.constants);
+  return variant;
+}
+
+void ForwardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> models,
+                          const ForwardFrame& frame, bool wireframe) {
+  for (ShadingModel model : models)
+    for (const DrawItem& draw : scene.draws) {
+      ForwardVariant key = variantOf(model, frame, scene, draw);
+      if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+    }
+  ForwardVariant wireframeKey{.model = ShadingModel::Unlit,
+                              .lights = scene.lights,
+                              .target = frame.target,
+                              .wireframe = true};
+  if (wireframe && context_.features().fillModeNonSolid && !pipelines_.count(wireframeKey))
+    pipelines_[wireframeKey] = createPipeline(wireframeKey);
 }
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   const auto& [model, lights, target, textured, blended, wireframe, environment, shadows, masked,
-               doubleSided] = key;
+               doubleSided, material] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -162,6 +184,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
     VkBool32 alphaMask;
     VkBool32 doubleSided;
     int32_t shadowedLights;
+    VkBool32 materialConstants;
+    std::array<uint32_t, 10> material;  // ka.rgb, kd.rgb, ks.rgb, n: float bit patterns
   } constants{int32_t(model),
               int32_t(lights.point),
               int32_t(lights.directional),
@@ -170,7 +194,9 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
               int32_t(shadows),
               masked ? VK_TRUE : VK_FALSE,
               doubleSided ? VK_TRUE : VK_FALSE,
-              int32_t(lights.shadowed)};
+              int32_t(lights.shadowed),
+              material ? VK_TRUE : VK_FALSE,
+              material.value_or(std::array<uint32_t, 10>{})};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -183,6 +209,18 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
       {/* constantID= */ SPEC_ALPHA_MASK, offsetof(decltype(constants), alphaMask), 4},
       {/* constantID= */ SPEC_DOUBLE_SIDED, offsetof(decltype(constants), doubleSided), 4},
       {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(decltype(constants), shadowedLights), 4},
+      {/* constantID= */ SPEC_MATERIAL_CONSTANTS, offsetof(decltype(constants), materialConstants),
+       4},
+      {SPEC_MATERIAL_KA, offsetof(decltype(constants), material) + 0, 4},
+      {SPEC_MATERIAL_KA + 1, offsetof(decltype(constants), material) + 4, 4},
+      {SPEC_MATERIAL_KA + 2, offsetof(decltype(constants), material) + 8, 4},
+      {SPEC_MATERIAL_KD, offsetof(decltype(constants), material) + 12, 4},
+      {SPEC_MATERIAL_KD + 1, offsetof(decltype(constants), material) + 16, 4},
+      {SPEC_MATERIAL_KD + 2, offsetof(decltype(constants), material) + 20, 4},
+      {SPEC_MATERIAL_KS, offsetof(decltype(constants), material) + 24, 4},
+      {SPEC_MATERIAL_KS + 1, offsetof(decltype(constants), material) + 28, 4},
+      {SPEC_MATERIAL_KS + 2, offsetof(decltype(constants), material) + 32, 4},
+      {SPEC_MATERIAL_SHININESS, offsetof(decltype(constants), material) + 36, 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};
@@ -300,24 +338,14 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardF
                          const GpuScene& scene, std::span<const DrawItem> draws,
                          const VkViewport& viewport) const {
   bindFrame(cmd, frame, scene, viewport);
-  // (textured, blended, masked, double-sided) of the bound pipeline
-  std::optional<std::array<bool, 4>> bound;
+  VkPipeline bound = VK_NULL_HANDLE;
   VkDescriptorSet materialSet = VK_NULL_HANDLE;
   for (const DrawItem& draw : draws) {
-    std::array<bool, 4> variant{draw.textured, draw.transparent, draw.masked, draw.doubleSided};
-    if (bound != variant) {
-      auto pipeline = pipelines_.find({.model = model,
-                                       .lights = scene.lights,
-                                       .target = frame.target,
-                                       .textured = draw.textured,
-                                       .blended = draw.transparent,
-                                       .environment = frame.environment,
-                                       .shadows = frame.shadows,
-                                       .masked = draw.masked,
-                                       .doubleSided = draw.doubleSided});
-      assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
-      bound = variant;
+    auto pipeline = pipelines_.find(variantOf(model, frame, scene, draw));
+    assert(pipeline != pipelines_.end() && "ForwardPass::prepare() not called for these draws");
+    if (pipeline->second.get() != bound) {
+      bound = pipeline->second.get();
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
     }
     if (draw.textured) {
       assert(draw.material < frame.materialSets.size() && "textured draw without its material set");

@@ -9,7 +9,9 @@
 // table): they read the uv and tangent attributes, which the others do not
 // declare. Transparent draws use blended variants that do not write depth.
 // Writes: the colour and depth attachments of the rendering scope it is recorded in.
+#include <array>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,8 +48,16 @@ struct ForwardVariant {
       ShadowMethod::Off;     // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
   bool masked = false;       // SPEC_ALPHA_MASK: glTF alphaMode MASK
   bool doubleSided = false;  // SPEC_DOUBLE_SIDED, no culling: glTF doubleSided
+  // SPEC_MATERIAL_CONSTANTS: the draw's ka, kd, ks and n compiled in (their
+  // bit patterns) instead of read from its push constants; empty: read.
+  std::optional<std::array<uint32_t, 10>> material;
   auto operator<=>(const ForwardVariant&) const = default;
 };
+
+// Scenes with more distinct materials than this draw every material with
+// the pipelines that read it from push constants (a pipeline per material
+// would cost more to build than it saves; see materialConstants).
+inline constexpr size_t kMaxMaterialPipelines = 16;
 
 // What one frame's forward draws are recorded with, besides the draws.
 struct ForwardFrame {
@@ -60,6 +70,13 @@ struct ForwardFrame {
   // Applied to the textured draws' TEXTURE_* push-constant flags per draw.
   bool bump = true;      // false: normal and height maps ignored
   bool mipTint = false;  // diffuse texels tinted by mip level
+  // Each material's values as specialization constants, a pipeline per
+  // material (ForwardVariant::material), when the scene has at most
+  // kMaxMaterialPipelines of them. llvmpipe compiles a constant into the
+  // fragment code; a push-constant value is loaded per fragment, per use
+  // (docs/PERFORMANCE.md has the figures). The JIT may round a folded
+  // constant differently: a few linear values move by one RGBA16F step.
+  bool materialConstants = false;
 };
 
 class ForwardPass {
@@ -68,15 +85,11 @@ class ForwardPass {
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
   VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_.get(); }
-  // Builds the pipelines of every shading model for a scene's light layout
-  // (specialization constants) and a target layout, before any frame records
-  // with them; `textured` adds the textured variants, `blended` the ones
-  // transparent draws use; `environment` selects the variants with the
-  // environment term; `masked` and `doubleSided` add those of glTF materials
-  // with alphaMode MASK and doubleSided.
-  void prepare(LightLayout lights, TargetLayout target, bool textured, bool blended,
-               bool environment = false, ShadowMethod shadows = ShadowMethod::Off,
-               bool masked = false, bool doubleSided = false);
+  // Builds, before any frame records with them, the pipelines that drawing
+  // `scene`'s draws under each of `models` with `frame`'s settings needs (and
+  // the wireframe's, if asked for); those built before are kept.
+  void prepare(const GpuScene& scene, std::span<const ShadingModel> models,
+               const ForwardFrame& frame, bool wireframe);
   // Records `draws` (visibleDraws: opaque first, then transparent ones, which
   // blend over what is drawn) inside an active dynamic-rendering scope; sets
   // its own viewport.
@@ -88,6 +101,10 @@ class ForwardPass {
   void recordWireframe(VkCommandBuffer cmd, const ForwardFrame& frame, const GpuScene& scene,
                        std::span<const DrawItem> draws, const VkViewport& viewport) const;
 
+  // How many materials (distinct ka, kd, ks and n) `scene`'s draws have:
+  // with ForwardFrame::materialConstants, a pipeline each per variant.
+  static size_t materialCount(const GpuScene& scene);
+
   // The shader table rows (shaders/CMakeLists.txt) compiled from the forward bodies.
   static std::vector<ShaderVariant> shaderVariants();
   // New SPIR-V by row name; rebuilds every pipeline prepared so far.
@@ -95,6 +112,10 @@ class ForwardPass {
 
  private:
   Pipeline createPipeline(const ForwardVariant& key) const;
+  // The pipeline `draw` is recorded with: prepare() builds and record()
+  // binds exactly these.
+  static ForwardVariant variantOf(ShadingModel model, const ForwardFrame& frame,
+                                  const GpuScene& scene, const DrawItem& draw);
   // The viewport and scissor, set 0 and the scene's vertex and index buffers.
   void bindFrame(VkCommandBuffer cmd, const ForwardFrame& frame, const GpuScene& scene,
                  const VkViewport& viewport) const;

@@ -201,10 +201,17 @@ void Renderer::retire(Frame& frame, RenderStats& stats) {
   VkFence fence = frame.fence;
   VK_CHECK(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
   double completion = nowMs();
+  // Queries 0 and 1 are always written; 2 and 3 only when something was
+  // recorded for them (recordScene and submitFrame say why). An unwritten
+  // query reads as the scene's end (2) or its start (3).
   uint64_t ticks[4] = {};
-  VK_CHECK(vkGetQueryPoolResults(context_.device(), frame.timestamps, 0, 4, sizeof(ticks), ticks,
-                                 sizeof(uint64_t),
-                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  for (uint32_t query = 0; query < 4; ++query)
+    if (frame.writtenTimestamps & (1u << query))
+      VK_CHECK(vkGetQueryPoolResults(context_.device(), frame.timestamps, query, 1,
+                                     sizeof(uint64_t), &ticks[query], sizeof(uint64_t),
+                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  if (!(frame.writtenTimestamps & (1u << 2))) ticks[2] = ticks[1];
+  if (!(frame.writtenTimestamps & (1u << 3))) ticks[3] = ticks[0];
   double period = context_.properties().limits.timestampPeriod;  // ns per tick
   stats.deviceMs.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
   stats.frameDeviceMs.push_back(double(ticks[2] - ticks[0]) * period * 1e-6);
@@ -300,20 +307,32 @@ void Renderer::validate(const GpuScene& scene, const FrameSettings& settings) co
 void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& settings) {
   validate(scene, settings);  // every InputError before anything changes
   if (scene.anyTextured) textures_.prepareFilter(settings.textures.filterOverride);
-  TargetLayout layout{settings.msaaSamples, settings.depth};
-  bool environment = settings.environment && sceneEnvironment_;
-  // No map to draw: the variants without shadows (the images of before them).
-  ShadowMethod shadows = scene.shadowLayers > 0 ? settings.shadows : ShadowMethod::Off;
-  forward_.prepare(scene.lights, layout, scene.anyTextured, scene.anyTransparent, environment,
-                   shadows, scene.anyMasked, scene.anyDoubleSided);
-  if (shadows != ShadowMethod::Off && shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
+  ForwardFrame forward = forwardFrame(scene, settings);
+  std::vector<ShadingModel> models = settings.splitModels;
+  if (models.empty()) models.push_back(settings.shadingModel);
+  forward_.prepare(scene, models, forward, settings.wireframe);
+  if (forward.shadows != ShadowMethod::Off &&
+      shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
     context_.waitIdle();  // no frame in flight may hold the descriptors being re-pointed
     for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
   }
-  if (environment) skybox_.prepare(layout);
+  TargetLayout layout = forward.target;
+  if (forward.environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
   settings_ = settings;
   settingsApplied_ = true;
+}
+
+ForwardFrame Renderer::forwardFrame(const GpuScene& scene, const FrameSettings& settings) const {
+  // No map to draw: the variants without shadows (the images of before them).
+  bool shadowed = settings.shadows != ShadowMethod::Off && scene.shadowLayers > 0;
+  return {.target = {settings.msaaSamples, settings.depth},
+          .environment = settings.environment && sceneEnvironment_,
+          .shadows = shadowed ? settings.shadows : ShadowMethod::Off,
+          .bump = settings.textures.bump,
+          .mipTint = settings.textures.mipTint,
+          .materialConstants = settings.materialConstants &&
+                               ForwardPass::materialCount(scene) <= kMaxMaterialPipelines};
 }
 
 void Renderer::waitForFrame(RenderStats& stats) {
@@ -323,6 +342,8 @@ void Renderer::waitForFrame(RenderStats& stats) {
 VkCommandBuffer Renderer::beginFrame() {
   Frame& frame = frames_[frameIndex_ % kFramesInFlight];
   assert(!frame.pending && "waitForFrame() first");
+  frame.writtenTimestamps = 0;
+  frame.commandsAfterScene = false;
   VK_CHECK(vkResetCommandPool(context_.device(), frame.pool, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -352,22 +373,26 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   // memcpy forbids even for zero bytes: UBSan reported it).
   if (!objects.empty())
     std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
-  bool shadowed = settings.shadows != ShadowMethod::Off && scene.shadowLayers > 0;
-  ForwardFrame forwardFrame{.target = target_.layout,
-                            .frameSet = frame.set,
-                            .environment = settings.environment && sceneEnvironment_,
-                            .shadows = shadowed ? settings.shadows : ShadowMethod::Off,
-                            .bump = settings.textures.bump,
-                            .mipTint = settings.textures.mipTint};
+  ForwardFrame forwardFrame = this->forwardFrame(scene, settings);
+  forwardFrame.frameSet = frame.set;
+  bool shadowed = forwardFrame.shadows != ShadowMethod::Off;
   if (scene.anyTextured)
     forwardFrame.materialSets = textures_.materialSets(settings.textures.filterOverride);
 
   VkCommandBuffer cmd = frame.cmd;
   vkCmdResetQueryPool(cmd, frame.timestamps, 0, 4);
+  // lavapipe flushes its rasteriser at every timestamp written after
+  // TOP_OF_PIPE, and each flush costs ~0.2 ms even with nothing to draw
+  // (docs/PERFORMANCE.md): the shadow maps' end is timed only when maps
+  // were drawn, and what follows the scene only when something does.
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, frame.timestamps, 0);
+  frame.writtenTimestamps = 0b11;
   stats.shadowDraws = 0;
   if (shadowed) recordShadows(cmd, frame, scene, source, view, projection, stats);
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 3);
+  if (stats.shadowDraws > 0) {
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 3);
+    frame.writtenTimestamps |= 1u << 3;
+  }
 
   beginRendering(cmd, source, width, height);
   // Split screen: equal columns, one shading model each, one camera.
@@ -413,6 +438,7 @@ void Renderer::recordReadback(const Buffer& readback) {
   VkCommandBuffer cmd = commandBuffer();
   const ImageDesc& desc = target_.color.desc();
   assert(readback.size() >= VkDeviceSize(desc.width) * desc.height * 8);
+  frames_[frameIndex_ % kFramesInFlight].commandsAfterScene = true;
   imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, target_.colorUse,
                ImageUse::TransferSource);
   target_.colorUse = ImageUse::TransferSource;
@@ -426,7 +452,10 @@ void Renderer::recordReadback(const Buffer& readback) {
 
 void Renderer::submitFrame(const FrameSync& sync) {
   Frame& frame = frames_[frameIndex_ % kFramesInFlight];
-  vkCmdWriteTimestamp2(frame.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 2);
+  if (frame.commandsAfterScene || sync.commandsAfterScene) {
+    vkCmdWriteTimestamp2(frame.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 2);
+    frame.writtenTimestamps |= 1u << 2;
+  }
   VK_CHECK(vkEndCommandBuffer(frame.cmd));
   VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
   cmdInfo.commandBuffer = frame.cmd;

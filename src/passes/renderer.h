@@ -69,6 +69,11 @@ struct FrameSettings {
   // (depth clamp); off clips them as any other pass would. Only study
   // shadow-near turns it off, to measure what the clamp saves.
   bool shadowDepthClamp = true;
+  // Materials compiled into the forward pipelines, a pipeline per material,
+  // when the scene has at most kMaxMaterialPipelines (ForwardFrame says why);
+  // off reads them from push constants. A few linear values may differ by
+  // one RGBA16F step between the two (tests/test_gltf_render.cpp).
+  bool materialConstants = true;
 };
 
 // renderToImage: one scene, uploaded once, drawn `frames` times.
@@ -102,6 +107,9 @@ struct FrameSync {
   VkSemaphore wait = VK_NULL_HANDLE;
   VkPipelineStageFlags2 waitStage = VK_PIPELINE_STAGE_2_NONE;
   VkSemaphore signal = VK_NULL_HANDLE;
+  // The caller recorded commands of its own after recordScene (a blit, an
+  // overlay): they are timed as part of the frame (RenderStats::frameDeviceMs).
+  bool commandsAfterScene = false;
 };
 
 // The colour target's RGBA16F texels as read back by recordReadback.
@@ -182,6 +190,8 @@ class Renderer {
     uint32_t objectCapacity = 0;
     VkDescriptorSet set = VK_NULL_HANDLE;
     bool pending = false;  // submitted, fence not yet waited on
+    uint32_t writtenTimestamps = 0;   // bit i: query i was written this frame
+    bool commandsAfterScene = false;  // recordReadback ran this frame
   };
   struct Target {
     Image color;  // single-sampled: what is read back
@@ -193,6 +203,9 @@ class Renderer {
     TargetLayout layout;
   };
 
+  // The forward pass's settings of frames drawn with `settings` (set 0 and
+  // the material sets are the frame's own; recordScene fills them in).
+  ForwardFrame forwardFrame(const GpuScene& scene, const FrameSettings& settings) const;
   void createFrame(Frame& frame);
   void ensureObjectCapacity(Frame& frame, uint32_t count);
   // Throws InputError for settings the device cannot draw `scene` with.

@@ -365,8 +365,10 @@ bool Viewer::drawFrame() {
     screenshot = &work.screenshot;
   }
   recordPresentTransition(cmd, image, extent, screenshot);
-  renderer_.submitFrame({imageAvailable_[slot], VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                         swapchain_.renderingDone(imageIndex)});
+  renderer_.submitFrame({.wait = imageAvailable_[slot],
+                         .waitStage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                         .signal = swapchain_.renderingDone(imageIndex),
+                         .commandsAfterScene = true});
   status = swapchain_.present(imageIndex);
   if (status != SwapchainStatus::Ok) {
     ++(status == SwapchainStatus::OutOfDate ? outOfDate_ : suboptimal_);
