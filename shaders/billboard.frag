@@ -18,19 +18,28 @@ layout(location = 5) in vec4 inTangent;
 
 layout(location = 0) out vec4 outColor;
 
+// The material has a normal or height map (and --bump is on): a constant,
+// since llvmpipe runs both sides of even a uniform branch, and bumpedNormal's
+// five lookups made every cut-out fragment pay for maps it did not have.
+layout(constant_id = SPEC_BILLBOARD_BUMP) const bool bumpMapped = false;
+
 void main() {
   vec2 st = textureCoordinate(inUv);
   vec4 texel = texture(diffuseMap, st);
   if (alphaMask && texel.a < draw.ka.w) discard;
   vec3 color;
+  // One lookup serves the cut-out and the colour (diffuseTexel's formula,
+  // which would sample again).
+  vec3 diffuse = texel.rgb;
+  if (hasMap(TEXTURE_MIP_TINT))
+    diffuse = mipLevelColor(textureQueryLod(diffuseMap, st).x) * (0.35 + 0.65 * diffuse);
   if (shadingModel == SHADING_UNLIT) {
-    color = diffuseTexel(st) * draw.kd.rgb;
+    color = diffuse * draw.kd.rgb;
   } else {
     SurfaceMaterial material = drawMaterial();
-    vec3 diffuse = diffuseTexel(st);
     material.ka *= diffuse;
     material.kd *= diffuse;
-    vec3 normal = bumpedNormal(inNormal, inTangent, st);
+    vec3 normal = bumpMapped ? bumpedNormal(inNormal, inTangent, st) : inNormal;
     // Seen from behind (a cylindrical quad from above its axis), the back
     // is lit as the front.
     if (!gl_FrontFacing) normal = -normal;

@@ -50,10 +50,10 @@ void main() {
     right = dot(r, r) > 1e-12 ? normalize(r) : anyPerpendicular(up);
     normal = cross(right, up);
   }
-  // Two counter-clockwise triangles: (0,0) (1,0) (1,1), (0,0) (1,1) (0,1).
-  const vec2 corners[6] = vec2[6](vec2(0.0, 0.0), vec2(1.0, 0.0), vec2(1.0, 1.0), vec2(0.0, 0.0),
-                                  vec2(1.0, 1.0), vec2(0.0, 1.0));
-  vec2 corner = corners[gl_VertexIndex];
+  // Two counter-clockwise triangles: (0,0) (1,0) (1,1), (0,0) (1,1) (0,1), as
+  // bits of two masks (vertex i's x is bit i of 0b010110, y of 0b110100):
+  // llvmpipe turns an indexed constant array into a per-lane gather.
+  vec2 corner = vec2(float((22 >> gl_VertexIndex) & 1), float((52 >> gl_VertexIndex) & 1));
   vec3 eye = anchor + right * ((corner.x - 0.5) * instance.centre.w) +
              up * ((corner.y - draw.optics.y) * instance.up.w);
   outPosition = eye;

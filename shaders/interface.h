@@ -74,6 +74,8 @@ using mat4 = glm::mat4;
 // constant, so a light without shadows has no lookup at all: llvmpipe runs
 // both sides of a branch, even a uniform one, and paid for it regardless.
 #define SPEC_SHADOWED_LIGHTS 11
+// Billboard pass: the draw's material has a normal or height map applied.
+#define SPEC_BILLBOARD_BUMP 12
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2

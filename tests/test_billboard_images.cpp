@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/scene/procedural_textures.h"
 #include "core/scene/scene_json.h"
 #include "gpu_test_support.h"
 
@@ -170,6 +171,22 @@ TEST_F(BillboardImages, ThousandsOfTreesAreOneDraw) {
   // The meshes' draws plus one per billboard object (forest, grove).
   EXPECT_LE(result.stats.drawCalls, uint32_t(scene.objects.size()) + 2u);
   EXPECT_GT(result.stats.billboardInstances, 1000u);
+}
+
+// A normal map changes how the quads are lit (Phong, per fragment); --bump
+// off draws them as without one.
+TEST_F(BillboardImages, NormalMapIsAppliedAndBumpOffRemovesIt) {
+  Scene plain = billboardScene(BillboardKind::Cylindrical);
+  Scene bumped = plain;
+  HeightField bricks = proceduralHeight({HeightPattern::Bricks, 64, 4});
+  bumped.textures.push_back(normalMapTexture(bricks, 8.0f, "bricks (normal map)"));
+  for (Billboard& billboard : bumped.billboards)
+    billboard.material.normalMap.texture = int32_t(bumped.textures.size() - 1);
+  ImageU8 withMap = render(bumped, small());
+  EXPECT_FALSE(matchesImage(render(plain, small()), withMap));
+  RenderSettings off = small();
+  off.textures.bump = false;
+  EXPECT_TRUE(matchesImage(render(plain, small()), render(bumped, off), {99.0, 0, 0.0}));
 }
 
 }  // namespace

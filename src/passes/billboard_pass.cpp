@@ -82,13 +82,14 @@ void BillboardPass::upload(const GpuScene& scene) {
 }
 
 void BillboardPass::prepare(LightLayout lights, TargetLayout target, ShadowMethod shadows,
-                            bool blended) {
+                            bool blended, bool bumped) {
   for (int model = 0; model < kShadingModelCount; ++model)
-    for (bool blendedVariant : {false, true}) {
-      if (blendedVariant && !blended) continue;
-      Variant key{ShadingModel(model), lights, target, shadows, blendedVariant};
-      if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-    }
+    for (bool blendedVariant : {false, true})
+      for (bool bumpedVariant : {false, true}) {
+        if ((blendedVariant && !blended) || (bumpedVariant && !bumped)) continue;
+        Variant key{ShadingModel(model), lights, target, shadows, blendedVariant, bumpedVariant};
+        if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+      }
 }
 
 Pipeline BillboardPass::createPipeline(const Variant& key) const {
@@ -101,10 +102,11 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
     int32_t shadowFilter;
     VkBool32 alphaMask;
     int32_t shadowedLights;
+    VkBool32 bumped;
   } constants{int32_t(key.model),          int32_t(lights.point),
               int32_t(lights.directional), lights.attenuated ? VK_TRUE : VK_FALSE,
               int32_t(key.shadows),        key.blended ? VK_FALSE : VK_TRUE,
-              int32_t(lights.shadowed)};
+              int32_t(lights.shadowed),    key.bumped ? VK_TRUE : VK_FALSE};
   using C = decltype(constants);
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(C, shadingModel), 4},
@@ -114,6 +116,7 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
       {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(C, shadowFilter), 4},
       {/* constantID= */ SPEC_ALPHA_MASK, offsetof(C, alphaMask), 4},
       {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(C, shadowedLights), 4},
+      {/* constantID= */ SPEC_BILLBOARD_BUMP, offsetof(C, bumped), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};
@@ -219,19 +222,17 @@ void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel
                            std::span<const BillboardDraw> draws, bool blended,
                            const VkViewport& viewport) const {
   if (draws.empty()) return;
-  auto pipeline = pipelines_.find({model, scene.lights, frame.target, frame.shadows, blended});
-  assert(pipeline != pipelines_.end() && "BillboardPass::prepare() not called for these draws");
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->second);
   VkDescriptorSet frameSet = frame.frameSet;
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
                           nullptr);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 2, 1, &sets_[frameSlot], 0,
                           nullptr);
   VkDescriptorSet materialSet = VK_NULL_HANDLE;
+  VkPipeline bound = VK_NULL_HANDLE;
   for (size_t i = 0; i < draws.size();) {
     // A run: one billboard's consecutive instances.
     BillboardDraw run = draws[i++];
@@ -248,6 +249,14 @@ void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel
     gpu::DrawConstants constants = billboard.constants;
     if (!frame.bump) constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
     if (frame.mipTint) constants.object.y |= TEXTURE_MIP_TINT;
+    bool bumped = (constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
+    auto pipeline =
+        pipelines_.find({model, scene.lights, frame.target, frame.shadows, blended, bumped});
+    assert(pipeline != pipelines_.end() && "BillboardPass::prepare() not called for these draws");
+    if (pipeline->second.get() != bound) {
+      bound = pipeline->second.get();
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
+    }
     vkCmdPushConstants(
         cmd, layout_,
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,

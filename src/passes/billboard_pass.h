@@ -52,8 +52,10 @@ class BillboardPass {
   // Sizes each frame slot's instance buffer for `scene` (no frame in flight).
   void upload(const GpuScene& scene);
   // The pipelines of every shading model for these lights, target and
-  // shadow filter; `blended` adds the blended ones.
-  void prepare(LightLayout lights, TargetLayout target, ShadowMethod shadows, bool blended);
+  // shadow filter; `blended` adds the blended ones, `bumped` those that
+  // apply normal and height maps.
+  void prepare(LightLayout lights, TargetLayout target, ShadowMethod shadows, bool blended,
+               bool bumped);
   // Culls each instance's bounding sphere against the frustum (unless
   // `cull` is off), moves the survivors to eye space into `frameSlot`'s
   // buffer (cut-out ones per billboard in scene order, then blended ones
@@ -77,6 +79,7 @@ class BillboardPass {
     TargetLayout target;
     ShadowMethod shadows;
     bool blended;
+    bool bumped;  // SPEC_BILLBOARD_BUMP
     auto operator<=>(const Variant&) const = default;
   };
   Pipeline createPipeline(const Variant& key) const;

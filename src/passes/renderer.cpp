@@ -320,7 +320,11 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   if (billboards) {
     bool blended = std::any_of(scene.billboards.begin(), scene.billboards.end(),
                                [](const GpuBillboard& billboard) { return billboard.blended; });
-    billboards_.prepare(scene.lights, layout, shadows, blended);
+    bool bumped =
+        std::any_of(scene.billboards.begin(), scene.billboards.end(), [](const GpuBillboard& b) {
+          return (b.constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
+        });
+    billboards_.prepare(scene.lights, layout, shadows, blended, bumped);
   }
   if (environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
