@@ -35,6 +35,20 @@ using mat4 = glm::mat4;
 #define BINDING_NORMAL_MAP 1
 #define BINDING_HEIGHT_MAP 2
 
+// Descriptor set 2 of the billboard pass: the frame's visible billboard
+// instances (BillboardInstance[], eye space), indexed by gl_InstanceIndex.
+#define BINDING_BILLBOARD_INSTANCES 0
+
+// Billboard kinds (DrawConstants::optics.x of a billboard draw): how the quad
+// turns towards the viewer (passes/billboard_pass.h).
+#define BILLBOARD_SCREEN 0       // parallel to the image plane
+#define BILLBOARD_SPHERICAL 1    // facing the eye point, its up kept near BillboardInstance::up
+#define BILLBOARD_CYLINDRICAL 2  // turning about BillboardInstance::up only
+// The most instances one object may have, and a scene in all: each visible
+// one is 32 bytes per frame in flight; a million is ~1 s per frame on lavapipe.
+#define MAX_INSTANCES_PER_OBJECT 262144
+#define MAX_INSTANCES_PER_SCENE 1048576
+
 // Specialization constant ids and the values of SHADING_MODEL. The number of
 // point and of directional lights are constants too: with them each kind of
 // light has its own loop that unrolls, every light is read at a constant
@@ -69,6 +83,8 @@ using mat4 = glm::mat4;
 #define SPEC_MATERIAL_KD 16         // 16, 17, 18
 #define SPEC_MATERIAL_KS 19         // 19, 20, 21
 #define SPEC_MATERIAL_SHININESS 22  // n
+// Billboard pass: the draw's material has a normal or height map applied.
+#define SPEC_BILLBOARD_BUMP 23
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2
@@ -147,6 +163,13 @@ struct DrawConstants {
   // KHR_texture_transform in the sampled (glTF) uv space: xy = offset, zw = scale.
   vec4 diffuseUv;
   vec4 normalUv;
+};
+
+// One billboard instance of one frame, in eye space (written by the host
+// per frame for the instances that survive culling).
+struct BillboardInstance {
+  vec4 centre;  // xyz = the anchor point, eye space; w = the quad's width
+  vec4 up;      // xyz = unit axis (cylindrical) or up (spherical), eye space; w = the height
 };
 
 // The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/scene/environment.cpp).

@@ -142,6 +142,17 @@ std::vector<std::string> sceneDifferences(const Scene& a, const Scene& b) {
     diff.field(path + ".transform", x.transform, y.transform);
     compareMaterial(diff, path + ".material", x.material, y.material);
   });
+  diff.list("billboards", a.billboards, b.billboards,
+            [&](const std::string& path, auto& x, auto& y) {
+              diff.field(path + ".name", x.name, y.name);
+              diff.field(path + ".kind", x.kind, y.kind);
+              diff.field(path + ".anchor", x.anchor, y.anchor);
+              diff.field(path + ".alpha", x.alpha, y.alpha);
+              diff.field(path + ".size", x.size, y.size);
+              diff.field(path + ".axis", x.axis, y.axis);
+              diff.field(path + ".instances", x.instances, y.instances);
+              compareMaterial(diff, path + ".material", x.material, y.material);
+            });
   diff.list("textures", a.textures, b.textures, [&](const std::string& path, auto& x, auto& y) {
     diff.field(path + ".name", x.name, y.name);
     diff.field(path + ".width", x.width, y.width);
@@ -156,10 +167,10 @@ std::filesystem::path sceneFile(const std::string& name) {
   return std::filesystem::path(SHADELAB_ASSET_DIR) / "scenes" / (name + ".json");
 }
 
-TEST(BuiltinScenes, TheElevenScenesOfTheCommandLine) {
+TEST(BuiltinScenes, TheTwelveScenesOfTheCommandLine) {
   EXPECT_THAT(builtinSceneNames(),
               testing::ElementsAre("bump", "default", "dense", "env", "highlight", "mip-plane",
-                                   "shadows", "spheres", "teapot", "whitted", "zfight"));
+                                   "shadows", "spheres", "teapot", "trees", "whitted", "zfight"));
 }
 
 TEST(BuiltinScenes, EachFileInAssetsLoadsToTheEmbeddedScene) {

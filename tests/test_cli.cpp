@@ -207,10 +207,10 @@ TEST_F(Cli, ScenesListsEachBuiltInWithItsDescription) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::string lines = "\n" + r.output;
   for (const char* name : {"bump", "default", "dense", "env", "highlight", "mip-plane", "shadows",
-                           "spheres", "teapot", "whitted", "zfight"})
+                           "spheres", "teapot", "trees", "whitted", "zfight"})
     EXPECT_NE(lines.find(std::string("\n") + name + " "), std::string::npos) << name;
   EXPECT_NE(r.output.find("teapot     The Utah teapot"), std::string::npos) << r.output;
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 11) << "one line each, no more";
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 12) << "one line each, no more";
 }
 
 // The copy a user makes renders exactly as the built-in it came from.

@@ -9,10 +9,12 @@
 
 #include "core/base/errors.h"
 #include "core/base/split_screen.h"
+#include "core/scene/frustum.h"
 #include "core/vulkan/barriers.h"
 #include "core/vulkan/vk_check.h"
 
 namespace shadelab {
+static_assert(BillboardPass::kFrameSlots == Renderer::kFramesInFlight);
 namespace {
 
 double nowMs() {
@@ -38,6 +40,8 @@ Renderer::Renderer(const Context& context)
       textures_(context, forward_.materialSetLayout()),
       skybox_(context, kColorFormat, forward_.descriptorSetLayout()),
       shadow_(context, forward_.materialSetLayout()),
+      billboards_(context, kColorFormat, forward_.descriptorSetLayout(),
+                  forward_.materialSetLayout()),
       environmentBuilder_(context),
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kFramesInFlight},
@@ -268,6 +272,7 @@ GpuScene Renderer::upload(const Scene& scene, const SceneUploadOptions& options)
   settingsApplied_ = false;  // the material sets and pipelines depend on the scene
   GpuScene gpuScene = uploadScene(context_, scene);
   textures_.upload(scene, gpuScene);
+  billboards_.upload(gpuScene);
   bindEnvironment(scene, options.environmentCube);
   return gpuScene;
 }
@@ -301,12 +306,14 @@ void Renderer::validate(const GpuScene& scene, const FrameSettings& settings) co
         throw InputError(std::string(name) + " " + std::to_string(value) + ": expected 0.." +
                          std::to_string(int(kMaxShadowBias)) + " texels");
   }
-  if (scene.anyTextured) textures_.checkFilter(settings.textures.filterOverride);
+  if (scene.anyTextured || !scene.billboards.empty())
+    textures_.checkFilter(settings.textures.filterOverride);
 }
 
 void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& settings) {
   validate(scene, settings);  // every InputError before anything changes
-  if (scene.anyTextured) textures_.prepareFilter(settings.textures.filterOverride);
+  bool billboards = !scene.billboards.empty();
+  if (scene.anyTextured || billboards) textures_.prepareFilter(settings.textures.filterOverride);
   ForwardFrame forward = forwardFrame(scene, settings);
   std::vector<ShadingModel> models = settings.splitModels;
   if (models.empty()) models.push_back(settings.shadingModel);
@@ -317,6 +324,15 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
     for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
   }
   TargetLayout layout = forward.target;
+  if (billboards) {
+    bool blended = std::any_of(scene.billboards.begin(), scene.billboards.end(),
+                               [](const GpuBillboard& billboard) { return billboard.blended; });
+    bool bumped =
+        std::any_of(scene.billboards.begin(), scene.billboards.end(), [](const GpuBillboard& b) {
+          return (b.constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
+        });
+    billboards_.prepare(scene.lights, layout, forward.shadows, blended, bumped);
+  }
   if (forward.environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
   settings_ = settings;
@@ -376,8 +392,17 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   ForwardFrame forwardFrame = this->forwardFrame(scene, settings);
   forwardFrame.frameSet = frame.set;
   bool shadowed = forwardFrame.shadows != ShadowMethod::Off;
-  if (scene.anyTextured)
+  if (scene.anyTextured || !scene.billboards.empty())
     forwardFrame.materialSets = textures_.materialSets(settings.textures.filterOverride);
+  BillboardFrame billboards;
+  if (!scene.billboards.empty()) {
+    billboards =
+        billboards_.prepareFrame(frameSlot(), scene, view, projection, settings.frustumCulling);
+    stats.billboardInstances = billboards.instances;
+    stats.culledInstances = billboards.culled;
+    stats.triangles += 2 * uint64_t(billboards.instances);
+    stats.drawCalls += uint32_t(billboards.cutOut.size());
+  }
 
   VkCommandBuffer cmd = frame.cmd;
   vkCmdResetQueryPool(cmd, frame.timestamps, 0, 4);
@@ -409,14 +434,50 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
     std::span<const DrawItem> opaque(draws.begin(), firstTransparent);
     std::span<const DrawItem> transparent(firstTransparent, draws.end());
     forward_.record(cmd, models[i], forwardFrame, scene, opaque, viewport);
+    billboards_.record(cmd, frameSlot(), models[i], forwardFrame, scene, billboards.cutOut, false,
+                       viewport);
     if (forwardFrame.environment)
       skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
-    if (!transparent.empty())
+    if (!billboards.blended.empty())
+      recordTransparent(cmd, models[i], forwardFrame, scene, transparent, billboards, view,
+                        viewport);
+    else if (!transparent.empty())
       forward_.record(cmd, models[i], forwardFrame, scene, transparent, viewport);
     if (settings.wireframe) forward_.recordWireframe(cmd, forwardFrame, scene, draws, viewport);
   }
   vkCmdEndRendering(cmd);
   vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, frame.timestamps, 1);
+}
+
+void Renderer::recordTransparent(VkCommandBuffer cmd, ShadingModel model,
+                                 const ForwardFrame& forwardFrame, const GpuScene& scene,
+                                 std::span<const DrawItem> transparent,
+                                 const BillboardFrame& billboards, const glm::mat4& view,
+                                 const VkViewport& viewport) const {
+  // Both lists are back to front (visibleDraws' key for the meshes); merged
+  // by that key, meshes first on a tie, each run of one kind recorded at once.
+  auto meshDepth = [&](size_t i) {
+    return (view * glm::vec4(centre(transparent[i].worldBounds), 1.0f)).z;
+  };
+  std::span<const BillboardDraw> blended = billboards.blended;
+  size_t mesh = 0, quad = 0;
+  while (mesh < transparent.size() || quad < blended.size()) {
+    size_t meshEnd = mesh;
+    while (meshEnd < transparent.size() &&
+           (quad == blended.size() || meshDepth(meshEnd) <= blended[quad].depth))
+      ++meshEnd;
+    if (meshEnd > mesh)
+      forward_.record(cmd, model, forwardFrame, scene, transparent.subspan(mesh, meshEnd - mesh),
+                      viewport);
+    mesh = meshEnd;
+    size_t quadEnd = quad;
+    while (quadEnd < blended.size() &&
+           (mesh == transparent.size() || blended[quadEnd].depth < meshDepth(mesh)))
+      ++quadEnd;
+    billboards_.record(cmd, frameSlot(), model, forwardFrame, scene,
+                       blended.subspan(quad, quadEnd - quad), true, viewport);
+    quad = quadEnd;
+  }
 }
 
 void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene,

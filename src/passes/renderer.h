@@ -16,6 +16,7 @@
 #include "core/vulkan/context.h"
 #include "core/vulkan/gpu_scene.h"
 #include "core/vulkan/resources.h"
+#include "passes/billboard_pass.h"
 #include "passes/environment_builder.h"
 #include "passes/forward_pass.h"
 #include "passes/scene_textures.h"
@@ -86,12 +87,14 @@ struct RenderStats {
   // Per frame, from the scene's start to the end of everything recorded after
   // it (a readback; the viewer's blit, overlay and screenshot copy).
   std::vector<double> frameDeviceMs;
-  std::vector<double> wallMs;    // per frame, interval between successive frame completions
-  std::vector<double> shadowMs;  // per frame, the shadow pass's share of deviceMs (0 without)
-  uint32_t shadowDraws = 0;      // caster draws per frame, summed over the maps' layers
-  uint64_t triangles = 0;        // submitted per frame (after culling)
-  uint32_t drawCalls = 0;        // submitted per frame (after culling)
-  uint32_t culledDraws = 0;      // objects outside the view frustum, not drawn
+  std::vector<double> wallMs;       // per frame, interval between successive frame completions
+  std::vector<double> shadowMs;     // per frame, the shadow pass's share of deviceMs (0 without)
+  uint32_t shadowDraws = 0;         // caster draws per frame, summed over the maps' layers
+  uint64_t triangles = 0;           // submitted per frame (after culling)
+  uint32_t drawCalls = 0;           // submitted per frame (after culling)
+  uint32_t culledDraws = 0;         // objects outside the view frustum, not drawn
+  uint32_t billboardInstances = 0;  // drawn per frame (after culling), in drawCalls' draws
+  uint32_t culledInstances = 0;     // billboard instances outside the view frustum
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;
@@ -225,6 +228,11 @@ class Renderer {
   void writeEnvironmentDescriptor(const Frame& frame) const;
   void writeShadowMapDescriptor(const Frame& frame) const;
   // The shadow pass of a frame (with shadows on and some light casting).
+  // The transparent draws and the blended billboards, back to front together.
+  void recordTransparent(VkCommandBuffer cmd, ShadingModel model, const ForwardFrame& forwardFrame,
+                         const GpuScene& scene, std::span<const DrawItem> transparent,
+                         const BillboardFrame& billboards, const glm::mat4& view,
+                         const VkViewport& viewport) const;
   void recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene, const Scene& source,
                      const glm::mat4& view, const glm::mat4& projection, RenderStats& stats);
 
@@ -233,6 +241,7 @@ class Renderer {
   SceneTextures textures_;
   SkyboxPass skybox_;
   ShadowPass shadow_;
+  BillboardPass billboards_;
   EnvironmentBuilder environmentBuilder_;
   EnvironmentCube placeholderEnvironment_;
   EnvironmentCube sceneEnvironment_;    // empty when the scene has none or it is off

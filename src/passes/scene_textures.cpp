@@ -179,17 +179,21 @@ void SceneTextures::upload(const Scene& scene, GpuScene& gpuScene) {
 
   // Objects whose materials use the same textures and samplers share a set.
   std::map<MaterialMaps, uint32_t> numbers;
-  for (DrawItem& draw : gpuScene.draws) {
-    if (!draw.textured) continue;
-    const Material& material = scene.objects[size_t(draw.constants.object.x)].material;
+  auto number = [&](const Material& material) {
     auto index = [](const TextureSlot& slot) { return slot.present() ? slot.texture : -1; };
     MaterialMaps maps{index(material.diffuseMap), material.diffuseMap.sampler,
                       index(material.normalMap),  material.normalMap.sampler,
                       index(material.heightMap),  material.heightMap.sampler};
     auto [found, added] = numbers.emplace(maps, uint32_t(materials_.size()));
     if (added) materials_.push_back(maps);
-    draw.material = found->second;
-  }
+    return found->second;
+  };
+  for (DrawItem& draw : gpuScene.draws)
+    if (draw.textured)
+      draw.material = number(scene.objects[size_t(draw.constants.object.x)].material);
+  // Billboards after the objects, so the objects' numbers are those they had before billboards.
+  for (size_t i = 0; i < gpuScene.billboards.size(); ++i)
+    gpuScene.billboards[i].material = number(scene.billboards[i].material);
   if (materials_.empty()) return;
   // Sized once for the scene: a set per material and filter choice.
   uint32_t maxSets = uint32_t(materials_.size() * kFilterChoices);

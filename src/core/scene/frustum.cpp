@@ -48,6 +48,12 @@ bool boxIntersectsFrustum(const Bounds& box, const Frustum& frustum) {
   return true;
 }
 
+bool sphereIntersectsFrustum(glm::vec3 centre, float radius, const Frustum& frustum) {
+  for (const Plane& plane : frustum.planes)
+    if (plane.signedDistance(centre) < -radius * glm::length(plane.normal)) return false;
+  return true;
+}
+
 Bounds unite(const Bounds& a, const Bounds& b) {
   return Bounds{glm::min(a.min, b.min), glm::max(a.max, b.max)};
 }

@@ -36,6 +36,9 @@ Bounds transformBounds(const Bounds& box, const glm::mat4& transform);
 // frustum): the test is conservative, never culls what is seen.
 bool boxIntersectsFrustum(const Bounds& box, const Frustum& frustum);
 
+// The same test for a sphere: false when it lies wholly outside some plane.
+bool sphereIntersectsFrustum(glm::vec3 centre, float radius, const Frustum& frustum);
+
 Bounds unite(const Bounds& a, const Bounds& b);
 inline glm::vec3 centre(const Bounds& box) {
   return 0.5f * (box.min + box.max);

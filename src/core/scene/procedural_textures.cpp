@@ -118,4 +118,42 @@ Texture normalMapTexture(const HeightField& field, float depth, const std::strin
   return texture;
 }
 
+Texture treeTexture(uint32_t size, const std::string& name) {
+  assert(size > 0);
+  Texture texture;
+  texture.name = name;
+  texture.width = texture.height = size;
+  texture.srgb = true;
+  texture.rgba8.assign(size_t(size) * size * 4, 0);
+  const glm::vec3 trunk{0.20f, 0.11f, 0.04f};
+  for (uint32_t y = 0; y < size; ++y)
+    for (uint32_t x = 0; x < size; ++x) {
+      // Texel centres; v runs up from the bottom row, u across from the centre line.
+      float u = (float(x) + 0.5f) / float(size) - 0.5f;
+      float v = 1.0f - (float(y) + 0.5f) / float(size);
+      bool inTrunk = std::abs(u) < 0.05f && v < 0.22f;
+      // Three tiers, each a triangle narrowing upwards, the lower ones wider.
+      bool inCrown = false;
+      float shade = 0.0f;
+      for (int tier = 0; tier < 3; ++tier) {
+        float base = 0.15f + 0.25f * float(tier), top = base + 0.45f;
+        float halfWidth = (0.46f - 0.1f * float(tier)) * (top - v) / (top - base);
+        if (v >= base && v <= top && std::abs(u) <= halfWidth) {
+          inCrown = true;
+          shade = std::abs(u) / std::max(halfWidth, 1e-6f);  // 0 at the centre, 1 at the edge
+        }
+      }
+      if (!inTrunk && !inCrown) continue;
+      float ripple =
+          0.5f + 0.5f * std::sin(40.0f * u + 23.0f * v) * std::sin(31.0f * v - 17.0f * u);
+      glm::vec3 green = glm::mix(glm::vec3(0.02f, 0.16f, 0.03f), glm::vec3(0.08f, 0.42f, 0.07f),
+                                 0.6f * ripple + 0.4f * (1.0f - shade));
+      glm::vec3 color = inCrown ? green : trunk;
+      size_t p = (size_t(y) * size + x) * 4;
+      for (int c = 0; c < 3; ++c) texture.rgba8[p + size_t(c)] = unorm8(linearToSrgb(color[c]));
+      texture.rgba8[p + 3] = 255;
+    }
+  return texture;
+}
+
 }  // namespace shadelab

@@ -58,4 +58,10 @@ Texture heightMapTexture(const HeightField& field, const std::string& name);
 // Data texture: rgb = n * 0.5 + 0.5 from heightFieldNormal.
 Texture normalMapTexture(const HeightField& field, float depth, const std::string& name);
 
+// A colour texture with alpha, for billboards: a conifer seen from the side
+// (a brown trunk under three tiers of green crown, shaded by a fixed ripple),
+// opaque on the tree and fully transparent around it. size x size texels,
+// row 0 at the top (the tree's tip).
+Texture treeTexture(uint32_t size, const std::string& name);
+
 }  // namespace shadelab

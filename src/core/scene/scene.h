@@ -165,6 +165,43 @@ struct Object {
   bool receivesShadows = true;  // its lighting looks the shadow maps up
 };
 
+// A billboard: a textured quad that turns towards the viewer, drawn by the
+// billboard pass (passes/billboard_pass.h), once per instance in one draw.
+enum class BillboardKind { Screen, Spherical, Cylindrical };
+inline constexpr NameTable<BillboardKind, 3> kBillboardKindNames = {
+    {{BillboardKind::Screen, "screen"},
+     {BillboardKind::Spherical, "spherical"},
+     {BillboardKind::Cylindrical, "cylindrical"}}};
+// Where the instance's position sits on the quad: its centre, or the middle
+// of its bottom edge (a tree standing on the ground).
+enum class BillboardAnchor { Center, Bottom };
+inline constexpr NameTable<BillboardAnchor, 2> kBillboardAnchorNames = {
+    {{BillboardAnchor::Center, "center"}, {BillboardAnchor::Bottom, "bottom"}}};
+// How the texture's alpha applies: cut-out (fragments below the cut-off are
+// discarded; opaque, writes depth) or blended (sorted back to front with the
+// transparent objects, writes no depth).
+enum class BillboardAlpha { Test, Blend };
+inline constexpr NameTable<BillboardAlpha, 2> kBillboardAlphaNames = {
+    {{BillboardAlpha::Test, "test"}, {BillboardAlpha::Blend, "blend"}}};
+
+struct Billboard {
+  std::string name;
+  BillboardKind kind = BillboardKind::Spherical;
+  BillboardAnchor anchor = BillboardAnchor::Center;
+  BillboardAlpha alpha = BillboardAlpha::Test;
+  glm::vec2 size{1.0f};  // width and height, world units, before each instance's scale
+  // World space: the axis a cylindrical billboard turns about, the up a
+  // spherical one keeps (as nearly as it can while facing the eye).
+  glm::vec3 axis{0.0f, 1.0f, 0.0f};
+  Material material;  // diffuseMap required (colour and alpha); alphaCutoff for Test
+  // World matrices, one per copy (at least one). A billboard takes its
+  // position (the translation) and its width and height scales (the lengths
+  // of the x and y columns) from each; it turns towards the viewer itself,
+  // so rotations do not orient it.
+  std::vector<glm::mat4> instances;
+  bool receivesShadows = true;  // billboards never cast (see billboard_pass.h)
+};
+
 struct Scene {
   std::string name;
   std::string description;  // one line, from a scene file's "description"
@@ -176,7 +213,8 @@ struct Scene {
   std::vector<Mesh> meshes;       // what is drawn
   std::vector<ShapeDesc> shapes;  // parallel to meshes: how each was built (Custom: loaded)
   std::vector<Object> objects;
-  std::vector<Texture> textures;  // referenced by Material texture slots
+  std::vector<Texture> textures;      // referenced by Material texture slots
+  std::vector<Billboard> billboards;  // drawn by the billboard pass; the tracer ignores them
 
   uint32_t addMesh(Mesh mesh);  // a custom mesh (kept as is when re-tessellating)
   uint32_t addShape(const ShapeDesc& shape);

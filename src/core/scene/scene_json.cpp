@@ -88,6 +88,28 @@
 //               tessellation 16 segments around the ring (3..1024), half as many around the tube
 //   "teapot"    the Utah teapot standing on y = 0, spout along +x, 3.15 high, 6.4 long;
 //               tessellation 16 quads per patch side (1..64; 32 patches)
+//   "billboard" a textured quad that turns towards the viewer, drawn by the billboard pass
+//               (passes/billboard_pass.h; the ray tracer does not draw billboards). Fields:
+//               "kind" "screen" (parallel to the image plane) | "spherical" (default: faces the
+//               eye point) | "cylindrical" (turns about "axis" only, e.g. a tree);
+//               "axis" [0, 1, 0] (world space: the cylindrical axis, the spherical up);
+//               "size" [width, height] or a number, default 1; "anchor" "center" (default) or
+//               "bottom": where the object's origin sits on the quad; "material" must have a
+//               "diffuse_map" (colour and alpha; {"procedural": "tree", "size": 128} makes a
+//               conifer with alpha); "alpha" "test" (default: texels below "alpha_cutoff",
+//               0..1, default 0.5, are cut away; writes depth) or "blend" (opacity = texel alpha
+//               x (1 - transparency), sorted back to front with the transparent objects);
+//               "receives_shadows" (default true; billboards never cast); "instances" (below).
+//               A billboard takes only position and width/height scale from its transform.
+//   "instances" on a billboard: copies drawn in one instanced draw, each culled on its own;
+//               exactly one of {"list": [transform, ...]} (one "transform" list per copy),
+//               {"grid": {"count": [nx, ny, nz], "spacing": [x, y, z] or a number (default
+//               1)}} (centred on the object's origin), {"scatter": {"count": n, "seed": 1,
+//               "rectangle": [width, depth] (> 0: in the object's xz plane, centred), "scale":
+//               [min, max] (uniform per copy, default [1, 1])}} (std::mt19937: the same copies
+//               on every machine). Each copy's matrix is the object's times its own. At most
+//               262,144 (MAX_INSTANCES_PER_OBJECT) per object, 1,048,576 per scene. Mesh
+//               shapes do not take "instances" yet.
 // Every shape may have "crease_angle" (degrees, 0..180): its normals are then recomputed as
 // area-weighted averages, with vertices split wherever faces meet at more than the angle
 // (0: faceted, as flat shading sees it; 180: all smooth, e.g. a box with rounded shading).
@@ -154,19 +176,24 @@
 #include "core/base/files.h"
 #include "core/base/json_nesting.h"
 #include "core/scene/gltf_loader.h"
+#include "core/scene/scene_json_billboards.h"
 #include "core/scene/scene_json_environment.h"
 #include "core/scene/scene_json_fields.h"
 #include "core/scene/scene_json_textures.h"
+#include "core/scene/scene_json_transform.h"
 #include "core/scene/transform.h"
 #include "interface.h"
 
 namespace shadelab {
 namespace {
 
+using scene_json::billboardFields;
 using scene_json::describe;
 using scene_json::Field;
 using scene_json::formatNumber;
 using scene_json::Names;
+using scene_json::parseBillboard;
+using scene_json::parseTransform;
 using scene_json::TextureLibrary;
 using MaterialTable = std::map<std::string, Material>;
 
@@ -308,6 +335,7 @@ const std::vector<ShapeSpec>& shapeSpecs() {
 const ShapeSpec& shapeSpec(const Field& field) {
   Names names;
   for (const ShapeSpec& spec : shapeSpecs()) names.push_back(spec.name);
+  names.push_back("billboard");  // handled by ObjectBuilder before this lookup
   return shapeSpecs()[field.choice("shape", names)];
 }
 
@@ -359,80 +387,6 @@ ShapeDesc parseShape(const Field& object, const ShapeSpec& spec) {
   return shape;
 }
 
-// A coordinate axis named "x", "y" or "z" gives the textbook's R_x, R_y, R_z,
-// exact where Rodrigues' formula for [1, 0, 0] may round c + (1 - c) below 1.
-glm::mat4 parseRotation(const Field& field) {
-  field.expectObject({"axis", "degrees", "about"});
-  Field axisField = field.required("axis", "the rotation axis [x, y, z] or \"x\", \"y\", \"z\"");
-  float angle = glm::radians(field.required("degrees", "the angle in degrees").number());
-  glm::mat4 rotation;
-  if (axisField.json().is_string()) {
-    size_t index = axisField.choice("axis", {"x", "y", "z"});
-    rotation = index == 0 ? rotationX(angle) : index == 1 ? rotationY(angle) : rotationZ(angle);
-  } else {
-    glm::vec3 axis = axisField.vec3();
-    if (glm::length(axis) == 0.0f) axisField.fail("zero-length rotation axis", "a non-zero vector");
-    rotation = rotationAxis(axis, angle);
-  }
-  if (auto about = field.optional("about")) {
-    glm::vec3 point = about->vec3();
-    return translation(point) * rotation * translation(-point);
-  }
-  return rotation;
-}
-
-glm::mat4 parseScale(const Field& field) {
-  glm::vec3 factors = field.vec3OrNumber();
-  if (factors.x == 0.0f || factors.y == 0.0f || factors.z == 0.0f)
-    field.fail("a scale factor of 0 flattens the object", "non-zero factors");
-  return scaling(factors);
-}
-
-glm::mat4 parseShear(const Field& field) {
-  field.expectObject({"xy", "xz", "yx", "yz", "zx", "zy"});
-  Shear shear;
-  const std::pair<const char*, float*> factors[] = {{"xy", &shear.xy}, {"xz", &shear.xz},
-                                                    {"yx", &shear.yx}, {"yz", &shear.yz},
-                                                    {"zx", &shear.zx}, {"zy", &shear.zy}};
-  for (auto [key, factor] : factors)
-    if (auto f = field.optional(key)) *factor = f->number();
-  return shearing(shear);
-}
-
-glm::mat4 parseStep(const Field& step) {
-  if (!step.json().is_object() || step.json().size() != 1)
-    step.wrongType("an object with exactly one of translate, rotate, scale, shear");
-  const std::string& key = step.json().begin().key();
-  Field value = step.at(key);
-  if (key == "translate") return translation(value.vec3());
-  if (key == "rotate") return parseRotation(value);
-  if (key == "scale") return parseScale(value);
-  if (key == "shear") return parseShear(value);
-  value.fail("unknown transform \"" + key + "\"", "one of translate, rotate, scale, shear");
-}
-
-bool isFinite(const glm::mat4& m) {
-  for (int column = 0; column < 4; ++column)
-    for (int row = 0; row < 4; ++row)
-      if (!std::isfinite(m[column][row])) return false;
-  return true;
-}
-
-// M = T1 T2 ... Tn: the last step acts on the points first.
-glm::mat4 parseTransform(const Field& field) {
-  glm::mat4 matrix(1.0f);
-  for (const Field& step : field.elements("an array of steps such as {\"translate\": [x, y, z]}"))
-    matrix = matrix * parseStep(step);
-  float det = glm::determinant(glm::mat3(matrix));
-  if (!isFinite(matrix) || !std::isfinite(det))
-    field.fail("the matrix overflows a float", "a transform with finite entries");
-  // Normals are transformed by the inverse transpose, which needs det != 0.
-  if (std::abs(det) < 1e-12f)
-    field.fail("the matrix is singular (determinant " + formatNumber(det) + ")",
-               "an invertible transform");
-  return matrix;
-}
-
 bool sameShape(const ShapeDesc& a, const ShapeDesc& b) {
   return a.kind == b.kind && a.size == b.size && a.halfExtents == b.halfExtents &&
          a.radius == b.radius && a.majorRadius == b.majorRadius && a.minorRadius == b.minorRadius &&
@@ -456,12 +410,20 @@ class ObjectBuilder {
                  "a shallower hierarchy");
     if (!field.json().is_object()) field.wrongType("an object (a shape or a group)");
     const ShapeSpec* spec = nullptr;
-    if (auto f = field.optional("shape")) spec = &shapeSpec(*f);
+    bool billboard = false;
+    if (auto f = field.optional("shape")) {
+      billboard = f->json() == "billboard";
+      if (!billboard) spec = &shapeSpec(*f);
+    }
     std::optional<Field> gltf = field.optional("gltf");
     Names allowed = {"name", "shape", "transform", "children"};
     if (gltf) {
       allowed = {"name", "gltf", "transform", "children"};
+    } else if (billboard) {
+      allowed.push_back("material");
+      allowed.insert(allowed.end(), billboardFields().begin(), billboardFields().end());
     } else if (spec) {
+      allowed.push_back("instances");  // refused below with its reason
       allowed.push_back("material");
       allowed.push_back("crease_angle");
       allowed.push_back("casts_shadows");
@@ -476,7 +438,12 @@ class ObjectBuilder {
     if (auto f = field.optional("transform")) world = parentWorld * parseTransform(*f);
     if (gltf) {
       addGltf(*gltf, world);
+    } else if (billboard) {
+      addBillboard(parseBillboard(field, name, world, material(field, name)), field);
     } else if (spec) {
+      if (auto f = field.optional("instances"))
+        f->fail("instances of a mesh shape are not built yet (one draw per object)",
+                "\"instances\" on a \"billboard\" object");
       ShapeDesc shape = parseShape(field, *spec);
       Material surface =
           material(field, name);  // checked before the (possibly large) mesh is built
@@ -489,7 +456,7 @@ class ObjectBuilder {
     std::optional<Field> children = field.optional("children");
     std::vector<Field> list;
     if (children) list = children->elements("an array of objects");
-    if (!spec && !gltf && list.empty())
+    if (!spec && !gltf && !billboard && list.empty())
       (children ? *children : field)
           .fail("a group (an object without \"shape\" or \"gltf\") with no children",
                 "a \"shape\", a \"gltf\" file or a non-empty \"children\" array");
@@ -531,6 +498,17 @@ class ObjectBuilder {
     appendGltf(scene_, path, world);
   }
 
+  // The scene's instances in all stay within MAX_INSTANCES_PER_SCENE.
+  void addBillboard(Billboard billboard, const Field& field) {
+    instanceTotal_ += billboard.instances.size();
+    if (instanceTotal_ > MAX_INSTANCES_PER_SCENE)
+      field.fail("the scene's billboards have " + std::to_string(instanceTotal_) +
+                     " instances in all, above the limit",
+                 "at most " + std::to_string(MAX_INSTANCES_PER_SCENE) +
+                     " per scene (MAX_INSTANCES_PER_SCENE)");
+    scene_.billboards.push_back(std::move(billboard));
+  }
+
   uint32_t mesh(const ShapeDesc& shape) {
     for (uint32_t i = 0; i < scene_.shapes.size(); ++i)
       if (sameShape(scene_.shapes[i], shape)) return i;
@@ -545,6 +523,7 @@ class ObjectBuilder {
   TextureLibrary& textures_;
   std::filesystem::path baseDirectory_;
   std::vector<uint32_t> unbuilt_;  // Scene::meshes slots still empty
+  size_t instanceTotal_ = 0;       // billboard instances so far
 };
 
 // "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error ..."

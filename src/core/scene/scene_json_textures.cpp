@@ -80,6 +80,15 @@ int32_t TextureLibrary::fileTexture(const Field& field, const std::string& owner
 }
 
 int32_t TextureLibrary::proceduralTexture(const Field& field, std::string_view slot) {
+  // A colour texture with alpha, not a height field: diffuse maps only.
+  if (slot == kDiffuse && field.has("procedural") && field.at("procedural").json() == "tree") {
+    field.expectObject({"procedural", "size"});
+    uint32_t size = 128;
+    if (auto f = field.optional("size")) size = f->integer(1, 4096, "texels per side");
+    std::string key = field.json().dump() + " " + std::string(slot);
+    if (auto found = loaded_.find(key); found != loaded_.end()) return found->second;
+    return add(key, treeTexture(size, "procedural tree"));
+  }
   Names allowed = {"procedural", "size", "repeats"};
   if (slot == kDiffuse) allowed.push_back("colors");
   if (slot == kNormal) allowed.push_back("depth");

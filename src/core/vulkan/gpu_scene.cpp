@@ -152,6 +152,10 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
   }
+  for (const Billboard& billboard : scene.billboards) {
+    gpuScene.billboards.push_back(gpuBillboard(billboard));
+    gpuScene.billboardInstances += uint32_t(billboard.instances.size());
+  }
   std::vector<uint32_t> order = gpuLightOrder(scene);
   gpuScene.shadowFirstLayer.fill(-1);
   for (size_t slot = 0; slot < order.size(); ++slot) {
@@ -161,6 +165,32 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     gpuScene.shadowLayers += light.type == LightType::Point ? 6 : 1;
   }
   return gpuScene;
+}
+
+GpuBillboard gpuBillboard(const Billboard& billboard) {
+  const Material& material = billboard.material;
+  GpuBillboard out;
+  out.blended = billboard.alpha == BillboardAlpha::Blend;
+  out.up = billboard.axis;
+  out.constants.ka = glm::vec4(material.ka, out.blended ? 0.0f : material.alphaCutoff);
+  out.constants.kd = glm::vec4(material.kd, 1.0f - material.transparency);
+  out.constants.ks = glm::vec4(material.ks, material.shininess);
+  int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
+                 (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
+                 (material.heightMap.present() ? TEXTURE_HEIGHT : 0);
+  out.constants.object = glm::ivec4(0, maps, billboard.receivesShadows ? 1 : 0, 0);
+  out.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, 0.0f);
+  int32_t kind = billboard.kind == BillboardKind::Screen      ? BILLBOARD_SCREEN
+                 : billboard.kind == BillboardKind::Spherical ? BILLBOARD_SPHERICAL
+                                                              : BILLBOARD_CYLINDRICAL;
+  float anchor = billboard.anchor == BillboardAnchor::Bottom ? 0.0f : 0.5f;
+  out.constants.optics = glm::vec4(float(kind), anchor, 0.0f, 0.0f);
+  out.instances.reserve(billboard.instances.size());
+  for (const glm::mat4& matrix : billboard.instances)
+    out.instances.push_back(
+        {glm::vec3(matrix[3]), billboard.size * glm::vec2(glm::length(glm::vec3(matrix[0])),
+                                                          glm::length(glm::vec3(matrix[1])))});
+  return out;
 }
 
 std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,

@@ -36,6 +36,28 @@ struct DrawItem {
   bool doubleSided = false;  // glTF doubleSided: drawn without culling, SPEC_DOUBLE_SIDED
 };
 
+// One copy of a billboard, world space (Billboard::instances reduced to what
+// a quad that faces the viewer keeps of a matrix).
+struct BillboardPlacement {
+  glm::vec3 position{0.0f};  // the anchor point
+  glm::vec2 size{1.0f};      // width, height
+};
+
+// A billboard object as the billboard pass draws it: one instanced draw of
+// its placements that survive culling, moved to eye space every frame.
+struct GpuBillboard {
+  // ka.w = alpha cut-off (alpha test), kd.w = opacity (1 - transparency),
+  // object.y = TEXTURE_* flags, object.z = receives shadows, texturing as for
+  // meshes; optics.x = BILLBOARD_* kind, optics.y = the anchor's height on
+  // the quad as a fraction (0 bottom, 0.5 centre).
+  gpu::DrawConstants constants{};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};  // world: a cylindrical one's axis, a spherical one's up
+  uint32_t material = 0;           // set 1 (passes/scene_textures), numbered at upload
+  bool blended = false;            // alpha blend: sorted with the transparent draws
+  std::vector<BillboardPlacement> instances;
+};
+GpuBillboard gpuBillboard(const Billboard& billboard);
+
 // How many lights of each kind the shaders loop over: specialization
 // constants, so a pipeline is built per layout (point lights + directional
 // lights <= MAX_LIGHTS).
@@ -69,6 +91,8 @@ struct GpuScene {
   // directional one), or -1 for a light without shadows.
   std::array<int32_t, MAX_LIGHTS> shadowFirstLayer{};
   uint32_t shadowLayers = 0;
+  std::vector<GpuBillboard> billboards;  // parallel to Scene::billboards
+  uint32_t billboardInstances = 0;       // summed over billboards
 };
 
 // Objects whose material asks for a UV projection draw a copy of their mesh

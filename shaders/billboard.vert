@@ -1,0 +1,64 @@
+#version 460
+// Billboard pass, vertex stage: one quad per instance, six vertices, no
+// vertex buffer. The instance's anchor and up come in eye space
+// (BillboardInstance, written per frame by the host); the quad's corners are
+// built here, in eye space, so the quad is a real surface with real depth
+// and meets the ground where it stands. Kinds (DrawConstants::optics.x):
+//   screen       right = x_eye, up = y_eye: parallel to the image plane;
+//   spherical    normal towards the eye point, right = up x normal: faces the
+//                viewer wherever it stands, tilting as the eye rises;
+//   cylindrical  up = its axis, right = axis x (towards the eye): turns about
+//                the axis only, so seen along the axis it is edge-on.
+// optics.y: where the anchor sits on the quad's height (0 bottom, 0.5 centre).
+#extension GL_GOOGLE_include_directive : require
+#include "lighting.glsl"
+
+layout(set = 2, binding = BINDING_BILLBOARD_INSTANCES, std430) readonly buffer InstanceBlock {
+  BillboardInstance instances[];
+};
+
+layout(location = 0) out vec3 outPosition;  // eye space
+layout(location = 1) out vec3 outNormal;    // eye space, unit
+layout(location = 4) out vec2 outUv;
+layout(location = 5) out vec4 outTangent;  // eye space: the quad's right, w = 1
+
+// A unit vector perpendicular to `axis`, for a view along it (degenerate).
+vec3 anyPerpendicular(vec3 axis) {
+  vec3 r = cross(axis, vec3(0.0, 0.0, 1.0));
+  if (dot(r, r) < 1e-12) r = cross(axis, vec3(1.0, 0.0, 0.0));
+  return normalize(r);
+}
+
+void main() {
+  BillboardInstance instance = instances[gl_InstanceIndex];
+  vec3 anchor = instance.centre.xyz;
+  int kind = int(draw.optics.x);
+  vec3 right, up, normal;
+  if (kind == BILLBOARD_SCREEN) {
+    right = vec3(1.0, 0.0, 0.0);
+    up = vec3(0.0, 1.0, 0.0);
+    normal = vec3(0.0, 0.0, 1.0);
+  } else if (kind == BILLBOARD_SPHERICAL) {
+    normal = safeNormalize(-anchor);
+    if (dot(normal, normal) == 0.0) normal = vec3(0.0, 0.0, 1.0);  // the eye at the anchor
+    vec3 r = cross(instance.up.xyz, normal);
+    right = dot(r, r) > 1e-12 ? normalize(r) : anyPerpendicular(normal);
+    up = cross(normal, right);
+  } else {
+    up = instance.up.xyz;
+    vec3 r = cross(up, -anchor);
+    right = dot(r, r) > 1e-12 ? normalize(r) : anyPerpendicular(up);
+    normal = cross(right, up);
+  }
+  // Two counter-clockwise triangles: (0,0) (1,0) (1,1), (0,0) (1,1) (0,1), as
+  // bits of two masks (vertex i's x is bit i of 0b010110, y of 0b110100):
+  // llvmpipe turns an indexed constant array into a per-lane gather.
+  vec2 corner = vec2(float((22 >> gl_VertexIndex) & 1), float((52 >> gl_VertexIndex) & 1));
+  vec3 eye = anchor + right * ((corner.x - 0.5) * instance.centre.w) +
+             up * ((corner.y - draw.optics.y) * instance.up.w);
+  outPosition = eye;
+  outNormal = normal;
+  outUv = corner;
+  outTangent = vec4(right, 1.0);
+  gl_Position = frame.projection * vec4(eye, 1.0);
+}

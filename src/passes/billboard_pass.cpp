@@ -1,0 +1,268 @@
+#include "passes/billboard_pass.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cstring>
+
+#include "core/scene/frustum.h"
+#include "core/vulkan/depth.h"
+#include "core/vulkan/shader.h"
+#include "core/vulkan/vk_check.h"
+#include "interface.h"
+#include "passes/graphics_pipeline.h"
+
+namespace shadelab {
+
+BillboardPass::BillboardPass(const Context& context, VkFormat colorFormat,
+                             VkDescriptorSetLayout frameSetLayout,
+                             VkDescriptorSetLayout materialSetLayout)
+    : context_(context), colorFormat_(colorFormat) {
+  VkDevice device = context.device();
+  VkDescriptorSetLayoutBinding binding{BINDING_BILLBOARD_INSTANCES,
+                                       VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                                       VK_SHADER_STAGE_VERTEX_BIT};
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.bindingCount = 1;
+  setInfo.pBindings = &binding;
+  VkDescriptorSetLayout instanceLayout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &instanceLayout));
+  instanceSetLayout_ = DescriptorSetLayout(device, instanceLayout);
+
+  // The forward pass's push constants (lighting.glsl reads the material from them).
+  VkPushConstantRange push{
+      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+      sizeof(gpu::DrawConstants)};
+  VkDescriptorSetLayout setLayouts[] = {frameSetLayout, materialSetLayout, instanceLayout};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 3;
+  layoutInfo.pSetLayouts = setLayouts;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
+  layout_ = PipelineLayout(device, layout);
+  vertex_ = loadShader(device, "billboard.vert");
+  fragment_ = loadShader(device, "billboard.frag");
+
+  // One set per frame slot, sized once.
+  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFrameSlots};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = kFrameSlots;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &size;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool));
+  pool_ = DescriptorPool(device, pool);
+  VkDescriptorSetLayout layouts[kFrameSlots] = {instanceLayout, instanceLayout};
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = pool;
+  allocInfo.descriptorSetCount = kFrameSlots;
+  allocInfo.pSetLayouts = layouts;
+  VK_CHECK(vkAllocateDescriptorSets(device, &allocInfo, sets_));
+}
+
+void BillboardPass::upload(const GpuScene& scene) {
+  // Every set written, even for a scene without billboards (lavapipe crashes
+  // on a bound set with an unwritten descriptor).
+  VkDeviceSize bytes =
+      VkDeviceSize(std::max(1u, scene.billboardInstances)) * sizeof(gpu::BillboardInstance);
+  for (uint32_t slot = 0; slot < kFrameSlots; ++slot) {
+    if (instances_[slot] && instances_[slot].size() >= bytes) continue;
+    instances_[slot] =
+        Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostVisible);
+    VkDescriptorBufferInfo info{instances_[slot].get(), 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = sets_[slot];
+    write.dstBinding = BINDING_BILLBOARD_INSTANCES;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    write.pBufferInfo = &info;
+    vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+  }
+}
+
+void BillboardPass::prepare(LightLayout lights, TargetLayout target, ShadowMethod shadows,
+                            bool blended, bool bumped) {
+  for (int model = 0; model < kShadingModelCount; ++model)
+    for (bool blendedVariant : {false, true})
+      for (bool bumpedVariant : {false, true}) {
+        if ((blendedVariant && !blended) || (bumpedVariant && !bumped)) continue;
+        Variant key{ShadingModel(model), lights, target, shadows, blendedVariant, bumpedVariant};
+        if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+      }
+}
+
+Pipeline BillboardPass::createPipeline(const Variant& key) const {
+  const LightLayout& lights = key.lights;
+  struct {
+    int32_t shadingModel;
+    int32_t pointLights;
+    int32_t directionalLights;
+    VkBool32 attenuated;
+    int32_t shadowFilter;
+    VkBool32 alphaMask;
+    int32_t shadowedLights;
+    VkBool32 bumped;
+  } constants{int32_t(key.model),          int32_t(lights.point),
+              int32_t(lights.directional), lights.attenuated ? VK_TRUE : VK_FALSE,
+              int32_t(key.shadows),        key.blended ? VK_FALSE : VK_TRUE,
+              int32_t(lights.shadowed),    key.bumped ? VK_TRUE : VK_FALSE};
+  using C = decltype(constants);
+  VkSpecializationMapEntry entries[] = {
+      {/* constantID= */ SPEC_SHADING_MODEL, offsetof(C, shadingModel), 4},
+      {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(C, pointLights), 4},
+      {/* constantID= */ SPEC_DIRECTIONAL_LIGHTS, offsetof(C, directionalLights), 4},
+      {/* constantID= */ SPEC_ATTENUATED_POINT_LIGHTS, offsetof(C, attenuated), 4},
+      {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(C, shadowFilter), 4},
+      {/* constantID= */ SPEC_ALPHA_MASK, offsetof(C, alphaMask), 4},
+      {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(C, shadowedLights), 4},
+      {/* constantID= */ SPEC_BILLBOARD_BUMP, offsetof(C, bumped), 4},
+  };
+  VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
+                                      &constants};
+  VkPipelineShaderStageCreateInfo stages[2] = {
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vertex_;
+  stages[0].pName = "main";
+  stages[0].pSpecializationInfo = &specialization;
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = fragment_;
+  stages[1].pName = "main";
+  stages[1].pSpecializationInfo = &specialization;
+  // No vertex buffer: the quad's corners come from gl_VertexIndex.
+  VkPipelineVertexInputStateCreateInfo vertexInput{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  VkPipelineRasterizationStateCreateInfo raster{
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  // Not culled: a cylindrical quad seen past its axis shows its back.
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VkSampleCountFlagBits(key.target.samples);
+  VkPipelineDepthStencilStateCreateInfo depth{
+      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = key.blended ? VK_FALSE : VK_TRUE;
+  depth.depthCompareOp = depthCompareOp(key.target.depth);
+  // "Over" with the texel's alpha, as the forward pass blends transparent draws.
+  VkPipelineColorBlendAttachmentState blend{};
+  blend.blendEnable = key.blended ? VK_TRUE : VK_FALSE;
+  blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blend.colorBlendOp = VK_BLEND_OP_ADD;
+  blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+  blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blend.alphaBlendOp = VK_BLEND_OP_ADD;
+  blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                         VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  return createGraphicsPipeline(
+      context_.device(), {stages, &vertexInput, &raster, &multisample, &depth, blend, colorFormat_,
+                          depthFormat(key.target.depth), layout_});
+}
+
+BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& scene,
+                                           const glm::mat4& view, const glm::mat4& projection,
+                                           bool cull) {
+  assert(frameSlot < kFrameSlots && instances_[frameSlot]);
+  BillboardFrame result;
+  Frustum frustum = frustumFromMatrix(projection * view);
+  auto* out = static_cast<gpu::BillboardInstance*>(instances_[frameSlot].mapped());
+  struct Blended {
+    float depth;
+    uint32_t billboard;
+    gpu::BillboardInstance instance;
+  };
+  std::vector<Blended> blended;
+  glm::mat3 rotation(view);
+  for (uint32_t b = 0; b < scene.billboards.size(); ++b) {
+    const GpuBillboard& billboard = scene.billboards[b];
+    glm::vec3 up = glm::normalize(rotation * billboard.up);
+    float anchor = billboard.constants.optics.y;
+    // Screen-aligned quads rise along the image's y, the others along `up` (or near it).
+    glm::vec3 rise =
+        int(billboard.constants.optics.x) == BILLBOARD_SCREEN ? glm::vec3(0, 1, 0) : up;
+    BillboardDraw draw{b, result.instances, 0, 0.0f};
+    for (const BillboardPlacement& placement : billboard.instances) {
+      // Any corner lies within the diagonal of the anchor, whichever way the quad turns.
+      float radius = glm::length(placement.size);
+      if (cull && !sphereIntersectsFrustum(placement.position, radius, frustum)) {
+        ++result.culled;
+        continue;
+      }
+      gpu::BillboardInstance instance{
+          glm::vec4(glm::vec3(view * glm::vec4(placement.position, 1.0f)), placement.size.x),
+          glm::vec4(up, placement.size.y)};
+      if (billboard.blended) {
+        float centreZ = instance.centre.z + rise.z * (0.5f - anchor) * placement.size.y;
+        blended.push_back({centreZ, b, instance});
+        continue;
+      }
+      out[result.instances++] = instance;
+      ++draw.instanceCount;
+    }
+    if (draw.instanceCount > 0) result.cutOut.push_back(draw);
+  }
+  // Back to front: eye space looks down -z. Ties keep scene order.
+  std::stable_sort(blended.begin(), blended.end(),
+                   [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
+  for (const Blended& entry : blended) {
+    result.blended.push_back({entry.billboard, result.instances, 1, entry.depth});
+    out[result.instances++] = entry.instance;
+  }
+  return result;
+}
+
+void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel model,
+                           const ForwardFrame& frame, const GpuScene& scene,
+                           std::span<const BillboardDraw> draws, bool blended,
+                           const VkViewport& viewport) const {
+  if (draws.empty()) return;
+  VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
+                   {uint32_t(viewport.width), uint32_t(viewport.height)}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  VkDescriptorSet frameSet = frame.frameSet;
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &frameSet, 0,
+                          nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 2, 1, &sets_[frameSlot], 0,
+                          nullptr);
+  VkDescriptorSet materialSet = VK_NULL_HANDLE;
+  VkPipeline bound = VK_NULL_HANDLE;
+  for (size_t i = 0; i < draws.size();) {
+    // A run: one billboard's consecutive instances.
+    BillboardDraw run = draws[i++];
+    while (i < draws.size() && draws[i].billboard == run.billboard &&
+           draws[i].firstInstance == run.firstInstance + run.instanceCount)
+      run.instanceCount += draws[i++].instanceCount;
+    const GpuBillboard& billboard = scene.billboards[run.billboard];
+    assert(billboard.material < frame.materialSets.size() && "billboard without its material set");
+    if (frame.materialSets[billboard.material] != materialSet) {
+      materialSet = frame.materialSets[billboard.material];
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 1, 1, &materialSet, 0,
+                              nullptr);
+    }
+    gpu::DrawConstants constants = billboard.constants;
+    if (!frame.bump) constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
+    if (frame.mipTint) constants.object.y |= TEXTURE_MIP_TINT;
+    bool bumped = (constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
+    auto pipeline =
+        pipelines_.find({model, scene.lights, frame.target, frame.shadows, blended, bumped});
+    assert(pipeline != pipelines_.end() && "BillboardPass::prepare() not called for these draws");
+    if (pipeline->second.get() != bound) {
+      bound = pipeline->second.get();
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound);
+    }
+    vkCmdPushConstants(
+        cmd, layout_,
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+        sizeof(constants), &constants);
+    vkCmdDraw(cmd, 6, run.instanceCount, 0, run.firstInstance);
+  }
+}
+
+}  // namespace shadelab

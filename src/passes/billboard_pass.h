@@ -1,0 +1,98 @@
+#pragma once
+// Billboard pass: textured quads that turn towards the viewer (screen-aligned,
+// spherical, cylindrical: shaders/billboard.vert), one instanced draw per
+// billboard object, lit as flat surfaces with the Phong equation and cut out
+// (alpha test) or blended by their texture's alpha.
+// Reads: set 0 = the forward pass's frame set (FrameData, ShadowData and the
+// shadow maps: billboards receive shadows); set 1 = the material's textures
+// (SceneTextures); set 2 = this frame slot's BillboardInstance[] (eye space),
+// which prepareFrame fills with the instances that survive culling.
+// Writes: the colour and depth attachments of the rendering scope it is
+// recorded in; cut-out quads write depth (real depth: they meet the ground
+// where they stand), blended ones only test it.
+// Shadows: billboards do not cast. A quad that turns with the camera would
+// cast a shadow that turns with it, and a light's view needs its own turn
+// (towards the light) to cast anything sensible; neither is honest, so the
+// shadow pass leaves them out and they only receive.
+#include <glm/glm.hpp>
+#include <map>
+#include <span>
+#include <vector>
+
+#include "core/scene/shading.h"
+#include "core/scene/shadows.h"
+#include "core/vulkan/context.h"
+#include "core/vulkan/gpu_scene.h"
+#include "core/vulkan/resources.h"
+#include "passes/forward_pass.h"
+
+namespace shadelab {
+
+// Instances [firstInstance, firstInstance + instanceCount) of this frame's
+// buffer, all of GpuScene::billboards[billboard].
+struct BillboardDraw {
+  uint32_t billboard = 0;
+  uint32_t firstInstance = 0;
+  uint32_t instanceCount = 0;
+  float depth = 0.0f;  // blended: the quad centre's eye-space z (the sort key)
+};
+
+// What prepareFrame culled and laid out for one frame.
+struct BillboardFrame {
+  std::vector<BillboardDraw> cutOut;   // one per alpha-tested billboard with visible instances
+  std::vector<BillboardDraw> blended;  // one per visible blended instance, back to front
+  uint32_t instances = 0;              // drawn (after culling)
+  uint32_t culled = 0;                 // instances outside the view frustum
+};
+
+class BillboardPass {
+ public:
+  BillboardPass(const Context& context, VkFormat colorFormat, VkDescriptorSetLayout frameSetLayout,
+                VkDescriptorSetLayout materialSetLayout);
+  // Sizes each frame slot's instance buffer for `scene` (no frame in flight).
+  void upload(const GpuScene& scene);
+  // The pipelines of every shading model for these lights, target and
+  // shadow filter; `blended` adds the blended ones, `bumped` those that
+  // apply normal and height maps.
+  void prepare(LightLayout lights, TargetLayout target, ShadowMethod shadows, bool blended,
+               bool bumped);
+  // Culls each instance's bounding sphere against the frustum (unless
+  // `cull` is off), moves the survivors to eye space into `frameSlot`'s
+  // buffer (cut-out ones per billboard in scene order, then blended ones
+  // back to front) and says how to draw them. The slot's previous frame
+  // must be finished.
+  BillboardFrame prepareFrame(uint32_t frameSlot, const GpuScene& scene, const glm::mat4& view,
+                              const glm::mat4& projection, bool cull);
+  // Records `draws` (of prepareFrame's, for this slot) inside an active
+  // dynamic-rendering scope; adjacent draws of one billboard over adjacent
+  // instances become one instanced draw.
+  void record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel model,
+              const ForwardFrame& frame, const GpuScene& scene,
+              std::span<const BillboardDraw> draws, bool blended, const VkViewport& viewport) const;
+
+  static constexpr uint32_t kFrameSlots = 2;  // Renderer::kFramesInFlight
+
+ private:
+  struct Variant {
+    ShadingModel model;
+    LightLayout lights;
+    TargetLayout target;
+    ShadowMethod shadows;
+    bool blended;
+    bool bumped;  // SPEC_BILLBOARD_BUMP
+    auto operator<=>(const Variant&) const = default;
+  };
+  Pipeline createPipeline(const Variant& key) const;
+
+  const Context& context_;
+  VkFormat colorFormat_;
+  DescriptorSetLayout instanceSetLayout_;
+  PipelineLayout layout_;
+  ShaderModule vertex_, fragment_;
+  DescriptorPool pool_;
+  Buffer instances_[kFrameSlots];  // BillboardInstance[], host-visible
+  VkDescriptorSet sets_[kFrameSlots] = {};
+  std::map<Variant, Pipeline> pipelines_;
+};
+
+}  // namespace shadelab

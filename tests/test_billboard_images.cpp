@@ -1,0 +1,221 @@
+// Billboards and instancing on the device: a golden per billboard kind (all
+// alpha-tested) and for alpha blend, each with a must-fail twin; an
+// instanced scene bit-identical to the same billboards drawn one by one;
+// per-instance culling that changes no pixel.
+#include <algorithm>
+#include <cstring>
+
+#include "core/scene/procedural_textures.h"
+#include "core/scene/scene_json.h"
+#include "gpu_test_support.h"
+
+namespace shadelab::test {
+namespace {
+
+constexpr uint32_t kWidth = 320;
+constexpr uint32_t kHeight = 180;
+
+RenderSettings small() {
+  return {kWidth, kHeight, ShadingModel::Phong};
+}
+
+// tests/data/billboards.json with every billboard of `kind`.
+Scene billboardScene(BillboardKind kind) {
+  Scene scene = loadSceneJson(std::string(SHADELAB_TEST_DATA_DIR) + "/billboards.json");
+  for (Billboard& billboard : scene.billboards) billboard.kind = kind;
+  return scene;
+}
+
+// The cylindrical trees blended at 65% opacity, sorted with a translucent box.
+Scene blendedScene() {
+  Scene scene = billboardScene(BillboardKind::Cylindrical);
+  for (Billboard& billboard : scene.billboards) {
+    billboard.alpha = BillboardAlpha::Blend;
+    billboard.material.transparency = 0.35f;
+  }
+  scene.objects[1].material.transparency = 0.5f;
+  return scene;
+}
+
+std::string goldenName(BillboardKind kind) {
+  return "billboard-" + std::string(nameOf(kBillboardKindNames, kind));
+}
+
+class BillboardGolden : public GpuTest, public ::testing::WithParamInterface<BillboardKind> {};
+
+TEST_P(BillboardGolden, MatchesGolden) {
+  EXPECT_TRUE(matchesGolden(goldenName(GetParam()), render(billboardScene(GetParam()), small())));
+}
+
+// Must-fail twin: each kind's golden rejects the images of the other two, so
+// a pass that turned its quads the wrong way would be caught.
+TEST_P(BillboardGolden, RejectsTheOtherKinds) {
+  for (BillboardKind other :
+       {BillboardKind::Screen, BillboardKind::Spherical, BillboardKind::Cylindrical}) {
+    if (other == GetParam()) continue;
+    SCOPED_TRACE(nameOf(kBillboardKindNames, other));
+    EXPECT_FALSE(
+        matchesImage(loadGolden(goldenName(GetParam())), render(billboardScene(other), small())));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, BillboardGolden,
+                         ::testing::Values(BillboardKind::Screen, BillboardKind::Spherical,
+                                           BillboardKind::Cylindrical),
+                         [](const auto& info) {
+                           return std::string(nameOf(kBillboardKindNames, info.param));
+                         });
+
+using BillboardImages = GpuTest;
+
+// Must-fail twin of alpha test: with a cut-off of 0 nothing is cut away and
+// each tree is its whole quad (black where the texture is transparent).
+TEST_F(BillboardImages, AlphaTestComparisonRejectsNoCutOut) {
+  Scene scene = billboardScene(BillboardKind::Cylindrical);
+  for (Billboard& billboard : scene.billboards) billboard.material.alphaCutoff = 0.0f;
+  EXPECT_FALSE(matchesImage(loadGolden("billboard-cylindrical"), render(scene, small())));
+}
+
+TEST_F(BillboardImages, AlphaBlendMatchesGolden) {
+  EXPECT_TRUE(matchesGolden("billboard-blend", render(blendedScene(), small())));
+}
+
+// Must-fail twin: the same trees cut out (opaque) instead of blended.
+TEST_F(BillboardImages, AlphaBlendComparisonRejectsOpaqueTrees) {
+  Scene scene = blendedScene();
+  for (Billboard& billboard : scene.billboards) billboard.material.transparency = 0.0f;
+  EXPECT_FALSE(matchesImage(loadGolden("billboard-blend"), render(scene, small())));
+}
+
+// Blending is not commutative, so the order must come from depth, not from
+// the scene: with the back tree moved to the front of the list the image is
+// the same (a pass that drew in list order would draw it last, over the
+// trees in front of it).
+TEST_F(BillboardImages, BlendedBillboardsAreSortedBackToFront) {
+  Scene scene = blendedScene();
+  Scene reordered = scene;
+  std::vector<glm::mat4>& row = reordered.billboards[0].instances;
+  std::rotate(row.rbegin(), row.rbegin() + 1, row.rend());  // the back tree first
+  ImageU8 sorted = render(scene, small());
+  EXPECT_TRUE(matchesImage(sorted, render(reordered, small()), {99.0, 0, 0.0}));
+}
+
+// One billboard object with N instances draws exactly what N billboard
+// objects with one placement each draw.
+std::string treesJson(const std::string& billboards) {
+  return R"({"camera": {"eye": [0, 2.5, 8], "at": [0, 1, 0]},
+    "lights": [{"type": "directional", "direction": [-1, -1, -1]}],
+    "materials": {"tree": {"diffuse_map": {"procedural": "tree", "size": 64}}},
+    "objects": [{"shape": "plane", "size": 10}, )" +
+         billboards + "]}";
+}
+
+std::string oneByOne(float shift) {
+  std::string objects;
+  const float xs[] = {-3.0f, -1.0f, 1.0f, 3.0f};
+  for (int i = 0; i < 4; ++i) {
+    float x = xs[i] + (i == 2 ? shift : 0.0f);
+    objects +=
+        std::string(i ? ", " : "") +
+        R"({"shape": "billboard", "kind": "cylindrical", "anchor": "bottom", "size": [1.5, 2], "material": "tree", "transform": [{"translate": [)" +
+        std::to_string(x) + R"(, 0, -1]}]})";
+  }
+  return treesJson(objects);
+}
+
+TEST_F(BillboardImages, InstancedEqualsOneByOneBitForBit) {
+  Scene instanced = parseSceneJson(
+      treesJson(
+          R"({"shape": "billboard", "kind": "cylindrical", "anchor": "bottom", "size": [1.5, 2], "material": "tree",
+        "instances": {"grid": {"count": [4, 1, 1], "spacing": [2, 1, 1]}},
+        "transform": [{"translate": [0, 0, -1]}]})"),
+      "instanced.json");
+  Scene separate = parseSceneJson(oneByOne(0.0f), "separate.json");
+  ASSERT_EQ(instanced.billboards.size(), 1u);
+  ASSERT_EQ(separate.billboards.size(), 4u);
+  RenderResult a = renderer().renderToImage(instanced, small());
+  RenderResult b = renderer().renderToImage(separate, small());
+  EXPECT_EQ(a.stats.billboardInstances, 4u);
+  EXPECT_EQ(b.stats.billboardInstances, 4u);
+  ASSERT_EQ(a.image.pixels.size(), b.image.pixels.size());
+  EXPECT_EQ(0, std::memcmp(a.image.pixels.data(), b.image.pixels.data(),
+                           a.image.pixels.size() * sizeof(float)));
+  // Twin: one tree a hundredth of a unit aside is caught by the same comparison.
+  RenderResult moved =
+      renderer().renderToImage(parseSceneJson(oneByOne(0.01f), "moved.json"), small());
+  EXPECT_NE(0, std::memcmp(a.image.pixels.data(), moved.image.pixels.data(),
+                           a.image.pixels.size() * sizeof(float)));
+}
+
+// Culling drops instances outside the view (most of the forest behind and
+// beside the camera) without changing a pixel.
+TEST_F(BillboardImages, InstanceCullingChangesNoPixel) {
+  Scene scene = builtinScene("trees");
+  scene.camera.at = scene.camera.eye + glm::vec3(1.0f, -0.1f, 0.0f);  // look along +x
+  RenderSettings settings = small();
+  RenderResult culled = renderer().renderToImage(scene, settings);
+  settings.frustumCulling = false;
+  RenderResult all = renderer().renderToImage(scene, settings);
+  EXPECT_GT(culled.stats.culledInstances, 1000u);
+  EXPECT_EQ(all.stats.culledInstances, 0u);
+  EXPECT_EQ(culled.stats.billboardInstances + culled.stats.culledInstances,
+            all.stats.billboardInstances);
+  EXPECT_EQ(0, std::memcmp(culled.image.pixels.data(), all.image.pixels.data(),
+                           culled.image.pixels.size() * sizeof(float)));
+}
+
+// The forest is one instanced draw, whatever its size.
+TEST_F(BillboardImages, ThousandsOfTreesAreOneDraw) {
+  Scene scene = builtinScene("trees");
+  RenderResult result = renderer().renderToImage(scene, small());
+  // The meshes' draws plus one per billboard object (forest, grove).
+  EXPECT_LE(result.stats.drawCalls, uint32_t(scene.objects.size()) + 2u);
+  EXPECT_GT(result.stats.billboardInstances, 1000u);
+}
+
+// A normal map changes how the quads are lit (Phong, per fragment); --bump
+// off draws them as without one.
+TEST_F(BillboardImages, NormalMapIsAppliedAndBumpOffRemovesIt) {
+  Scene plain = billboardScene(BillboardKind::Cylindrical);
+  Scene bumped = plain;
+  HeightField bricks = proceduralHeight({HeightPattern::Bricks, 64, 4});
+  bumped.textures.push_back(normalMapTexture(bricks, 8.0f, "bricks (normal map)"));
+  for (Billboard& billboard : bumped.billboards)
+    billboard.material.normalMap.texture = int32_t(bumped.textures.size() - 1);
+  ImageU8 withMap = render(bumped, small());
+  EXPECT_FALSE(matchesImage(render(plain, small()), withMap));
+  RenderSettings off = small();
+  off.textures.bump = false;
+  EXPECT_TRUE(matchesImage(render(plain, small()), render(bumped, off), {99.0, 0, 0.0}));
+}
+
+uint64_t treePixels(const ImageU8& image) {
+  uint64_t count = 0;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) {
+      glm::u8vec4 pixel = image.at(x, y);
+      count += pixel.g > pixel.r + 20 && pixel.g > pixel.b + 20;  // the crown's green
+    }
+  return count;
+}
+
+// The cylindrical billboard's known failure, measured: seen along its axis
+// (from straight above a tree) the quad is edge-on and all but vanishes,
+// where a spherical one still shows the whole tree.
+TEST_F(BillboardImages, CylindricalSeenAlongItsAxisIsEdgeOn) {
+  Scene scene = parseSceneJson(
+      R"({"camera": {"eye": [0, 10, 0], "at": [0, 0, 0], "up": [0, 0, -1]},
+          "ambient": 1, "background": [0, 0, 0],
+          "materials": {"t": {"diffuse_map": {"procedural": "tree", "size": 64}}},
+          "objects": [{"shape": "billboard", "material": "t", "size": [3, 4]}]})",
+      "above.json");
+  scene.billboards[0].kind = BillboardKind::Spherical;
+  uint64_t spherical = treePixels(render(scene, small()));
+  scene.billboards[0].kind = BillboardKind::Cylindrical;
+  uint64_t cylindrical = treePixels(render(scene, small()));
+  EXPECT_GT(spherical, 1000u);  // 2,222 here; the cylindrical quad: 0
+  EXPECT_LT(cylindrical * 50, spherical) << "cylindrical " << cylindrical;
+}
+
+}  // namespace
+}  // namespace shadelab::test
