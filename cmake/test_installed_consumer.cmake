@@ -6,7 +6,8 @@
 # `render` of the same scene and settings (shadows off: the library's
 # FrameSettings default, where the CLI defaults to pcf3).
 # With SANITIZE (the asan preset) the installed libraries hold ASan and UBSan
-# calls, so the consumer is compiled and linked with the same sanitizers.
+# calls, so the consumer is compiled and linked with the same sanitizers (and
+# runs without the leak check, see below).
 # cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DBUILD_TYPE=... [-DVALIDATE=ON]
 #       [-DSANITIZE=ON] -P this
 foreach(var BUILD_DIR SOURCE_DIR WORK_DIR BUILD_TYPE)
@@ -27,6 +28,10 @@ endfunction()
 set(sanitize_flags "")
 if(SANITIZE)
   set(sanitize_flags -fsanitize=address,undefined)
+  # The consumer lacks tests/sanitizers/keep_modules.cpp, so lavapipe's and
+  # LLVM's leaks come from unloaded modules LSan cannot match to the
+  # suppressions; the library's own leaks are checked by every other test.
+  set(ENV{ASAN_OPTIONS} detect_leaks=0)
 endif()
 set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
