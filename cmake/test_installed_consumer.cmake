@@ -37,6 +37,12 @@ set(prefix ${WORK_DIR}/prefix)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+if(SANITIZE)
+  # ASan intercepts dlopen, so the search runs with libasan's RUNPATH, not the
+  # consumer's: under the sanitizers the module is named outright.
+  file(GLOB_RECURSE sanitized_module ${prefix}/*/libshadelab_oiio.so)
+  set(ENV{SHADELAB_OIIO_MODULE} ${sanitized_module})
+endif()
 
 # 1. CMake: find_package(shadelab CONFIG) and shadelab::shadelab.
 run_step("configure the consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/headless_capture
