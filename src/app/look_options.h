@@ -31,7 +31,7 @@ struct LookOptions {
   std::string bump = "on";
   bool mipTint = false;
   std::string materialConstants = "on";  // --material-constants
-  ShadowOptions shadows;  // --shadows, --shadow-size, the bias options
+  ShadowOptions shadows;                 // --shadows, --shadow-size, the bias options
 };
 
 void addLookOptions(CLI::App* command, LookOptions& options);

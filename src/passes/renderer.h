@@ -192,7 +192,7 @@ class Renderer {
     Buffer shadowData;  // ShadowData, host-visible
     uint32_t objectCapacity = 0;
     VkDescriptorSet set = VK_NULL_HANDLE;
-    bool pending = false;  // submitted, fence not yet waited on
+    bool pending = false;             // submitted, fence not yet waited on
     uint32_t writtenTimestamps = 0;   // bit i: query i was written this frame
     bool commandsAfterScene = false;  // recordReadback ran this frame
   };
