@@ -176,28 +176,35 @@ void Renderer::checkDepthSupport(DepthMode mode) const {
 }
 
 void Renderer::ensureTarget(uint32_t width, uint32_t height, TargetLayout layout) {
-  if (target_.color && target_.color.desc().width == width &&
-      target_.color.desc().height == height && target_.layout == layout)
-    return;
+  TargetShape shape{width, height, layout};
+  if (shape == targetShape_) return;
   // Frames in flight may still draw into the old images.
-  if (target_.color) context_.waitIdle();
-  target_ = Target{};
-  target_.layout = layout;
-  uint32_t samples = layout.samples;
-  ImageDesc color{kColorFormat, width, height};
+  if (std::any_of(targets_.begin(), targets_.end(), [](const Target& t) { return bool(t.color); }))
+    context_.waitIdle();
+  targets_ = {};
+  targetShape_ = shape;
+}
+
+Renderer::Target& Renderer::frameTarget() {
+  Target& target = targets_[frameSlot()];
+  if (target.color) return target;
+  const TargetShape& shape = targetShape_;
+  uint32_t samples = shape.layout.samples;
+  ImageDesc color{kColorFormat, shape.width, shape.height};
   color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  target_.color = Image(context_, color);
-  ImageDesc depth{depthFormat(layout.depth), width, height};
+  target.color = Image(context_, color);
+  ImageDesc depth{depthFormat(shape.layout.depth), shape.width, shape.height};
   depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
   depth.samples = VkSampleCountFlagBits(samples);
-  target_.depth = Image(context_, depth);
+  target.depth = Image(context_, depth);
   if (samples > 1) {
     ImageDesc multisampled = color;
     multisampled.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     multisampled.samples = VkSampleCountFlagBits(samples);
-    target_.multisampled = Image(context_, multisampled);
+    target.multisampled = Image(context_, multisampled);
   }
+  return target;
 }
 
 void Renderer::retire(Frame& frame, RenderStats& stats) {
@@ -227,36 +234,42 @@ void Renderer::retire(Frame& frame, RenderStats& stats) {
 
 void Renderer::beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width,
                               uint32_t height) {
-  imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, target_.colorUse,
-               ImageUse::ColorAttachment);
-  imageBarrier(cmd, target_.depth.get(), VK_IMAGE_ASPECT_DEPTH_BIT, target_.depthUse,
-               ImageUse::DepthAttachment);
-  target_.colorUse = ImageUse::ColorAttachment;
-  target_.depthUse = ImageUse::DepthAttachment;
-  bool multisampled = target_.layout.samples > 1;
-  if (multisampled) {
-    imageBarrier(cmd, target_.multisampled.get(), VK_IMAGE_ASPECT_COLOR_BIT,
-                 target_.multisampledUse, ImageUse::ColorAttachment);
-    target_.multisampledUse = ImageUse::ColorAttachment;
-  }
+  Target& target = frameTarget();
+  // The slot's images were last drawn by the frame kFramesInFlight before,
+  // whose fence beginFrame's caller waited on: while they are still
+  // attachments, that wait orders this frame's writes after its writes and
+  // no barrier is recorded. lavapipe flushes its rasteriser at every barrier,
+  // and the one a shared target needs here cost ~6% of a frame on glmark2's
+  // cat (docs/PERFORMANCE.md).
+  auto attach = [cmd](const Image& image, VkImageAspectFlags aspect, ImageUse& use,
+                      ImageUse attachment) {
+    if (use != attachment) imageBarrier(cmd, image.get(), aspect, use, attachment);
+    use = attachment;
+  };
+  attach(target.color, VK_IMAGE_ASPECT_COLOR_BIT, target.colorUse, ImageUse::ColorAttachment);
+  attach(target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, target.depthUse, ImageUse::DepthAttachment);
+  bool multisampled = targetShape_.layout.samples > 1;
+  if (multisampled)
+    attach(target.multisampled, VK_IMAGE_ASPECT_COLOR_BIT, target.multisampledUse,
+           ImageUse::ColorAttachment);
   VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  color.imageView = multisampled ? target_.multisampled.view() : target_.color.view();
+  color.imageView = multisampled ? target.multisampled.view() : target.color.view();
   color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   // With MSAA the samples are averaged into the single-sampled image and dropped.
   color.storeOp = multisampled ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
   if (multisampled) {
     color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-    color.resolveImageView = target_.color.view();
+    color.resolveImageView = target.color.view();
     color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   }
   color.clearValue.color = {{source.background.r, source.background.g, source.background.b, 1.0f}};
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  depth.imageView = target_.depth.view();
+  depth.imageView = target.depth.view();
   depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
   depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {depthClearValue(target_.layout.depth), 0};
+  depth.clearValue.depthStencil = {depthClearValue(targetShape_.layout.depth), 0};
   VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
   rendering.renderArea = {{0, 0}, {width, height}};
   rendering.layerCount = 1;
@@ -437,7 +450,7 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
     billboards_.record(cmd, frameSlot(), models[i], forwardFrame, scene, billboards.cutOut, false,
                        viewport);
     if (forwardFrame.environment)
-      skybox_.record(cmd, target_.layout, frame.set, view, projection, viewport);
+      skybox_.record(cmd, targetShape_.layout, frame.set, view, projection, viewport);
     if (!billboards.blended.empty())
       recordTransparent(cmd, models[i], forwardFrame, scene, transparent, billboards, view,
                         viewport);
@@ -497,16 +510,18 @@ void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& 
 
 void Renderer::recordReadback(const Buffer& readback) {
   VkCommandBuffer cmd = commandBuffer();
-  const ImageDesc& desc = target_.color.desc();
+  Target& target = targets_[frameSlot()];
+  assert(target.color && "recordScene() first");
+  const ImageDesc& desc = target.color.desc();
   assert(readback.size() >= VkDeviceSize(desc.width) * desc.height * 8);
   frames_[frameIndex_ % kFramesInFlight].commandsAfterScene = true;
-  imageBarrier(cmd, target_.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, target_.colorUse,
+  imageBarrier(cmd, target.color.get(), VK_IMAGE_ASPECT_COLOR_BIT, target.colorUse,
                ImageUse::TransferSource);
-  target_.colorUse = ImageUse::TransferSource;
+  target.colorUse = ImageUse::TransferSource;
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {desc.width, desc.height, 1};
-  vkCmdCopyImageToBuffer(cmd, target_.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+  vkCmdCopyImageToBuffer(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                          readback.get(), 1, &region);
   transferToHostBarrier(cmd);
 }

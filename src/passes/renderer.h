@@ -172,8 +172,8 @@ class Renderer {
 
   // What recordScene drew, for a step that copies it on (presentation); a
   // step that changes its layout records the new use.
-  const Image& colorTarget() const { return target_.color; }
-  ImageUse& colorTargetUse() { return target_.colorUse; }
+  const Image& colorTarget() const { return targets_[frameSlot()].color; }
+  ImageUse& colorTargetUse() { return targets_[frameSlot()].colorUse; }
 
   // The shader table rows the passes reload (shaders/CMakeLists.txt).
   static std::vector<ShaderVariant> shaderVariants();
@@ -196,6 +196,9 @@ class Renderer {
     uint32_t writtenTimestamps = 0;   // bit i: query i was written this frame
     bool commandsAfterScene = false;  // recordReadback ran this frame
   };
+  // One per frame in flight, made on the slot's first frame: a frame never
+  // draws into images the frame before it may still be drawing, so needs no
+  // barrier while they stay attachments (beginRendering says why that pays).
   struct Target {
     Image color;  // single-sampled: what is read back
     Image depth;
@@ -203,7 +206,12 @@ class Renderer {
     ImageUse colorUse = ImageUse::Undefined;
     ImageUse depthUse = ImageUse::Undefined;
     ImageUse multisampledUse = ImageUse::Undefined;
+  };
+  struct TargetShape {
+    uint32_t width = 0;
+    uint32_t height = 0;
     TargetLayout layout;
+    bool operator==(const TargetShape&) const = default;
   };
 
   // The forward pass's settings of frames drawn with `settings` (set 0 and
@@ -215,7 +223,10 @@ class Renderer {
   void validate(const GpuScene& scene, const FrameSettings& settings) const;
   // Throws InputError when the device cannot use the depth format as an attachment.
   void checkDepthSupport(DepthMode mode) const;
+  // Sets the targets' size and layout; drops images of another shape.
   void ensureTarget(uint32_t width, uint32_t height, TargetLayout layout);
+  // The frame slot's target, its images made if not yet.
+  Target& frameTarget();
   void beginRendering(VkCommandBuffer cmd, const Scene& source, uint32_t width, uint32_t height);
   // Waits for the frame's previous submission and records its timings.
   void retire(Frame& frame, RenderStats& stats);
@@ -250,7 +261,8 @@ class Renderer {
   std::array<Frame, kFramesInFlight> frames_;
   uint64_t frameIndex_ = 0;  // frames begun; the slot is frameIndex_ % kFramesInFlight
   double lastCompletion_ = 0.0;
-  Target target_;
+  std::array<Target, kFramesInFlight> targets_;  // by frame slot
+  TargetShape targetShape_;
   FrameSettings settings_;        // as last applied
   bool settingsApplied_ = false;  // since the last upload
   uint32_t uploadCount_ = 0;
