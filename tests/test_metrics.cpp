@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "core/base/stats.h"
@@ -229,6 +231,45 @@ TEST(Srgb, TransferFunctionMatchesTheStandard) {
     float encoded = i / 255.0f;
     EXPECT_NEAR(linearToSrgb(srgbToLinear(encoded)), encoded, 1e-5f) << i;
   }
+}
+
+// linearToSrgb8 is a table built from the transfer function; it must give
+// the same code as quantising linearToSrgb for every float. Checked here: a
+// window of bit patterns around each of the 255 steps, a stride through all
+// of [0, 1], and the values outside it.
+TEST(Srgb, TableEncodingEqualsTheTransferFunction) {
+  auto reference = [](float linear) {
+    return uint8_t(std::lround(std::clamp(linearToSrgb(linear), 0.0f, 1.0f) * 255.0f));
+  };
+  uint32_t one = std::bit_cast<uint32_t>(1.0f);
+  size_t checked = 0, mismatches = 0;
+  auto check = [&](uint32_t bits) {
+    float linear = std::bit_cast<float>(bits);
+    ++checked;
+    if (linearToSrgb8(linear) != reference(linear) && ++mismatches <= 5)
+      ADD_FAILURE() << "bits " << bits << " (" << linear << "): table "
+                    << int(linearToSrgb8(linear)) << ", function " << int(reference(linear));
+  };
+  for (uint32_t bits = 0; bits <= one; bits += 97) check(bits);
+  // The steps: where the code first reaches each value, found by bisection
+  // on the function, then 4096 patterns either side.
+  for (int code = 1; code <= 255; ++code) {
+    uint32_t lower = 0, upper = one;  // reference(lower) < code <= reference(upper)
+    while (upper - lower > 1) {
+      uint32_t middle = lower + (upper - lower) / 2;
+      (reference(std::bit_cast<float>(middle)) >= code ? upper : lower) = middle;
+    }
+    for (uint32_t bits = upper - std::min(upper, 4096u); bits <= std::min(one, upper + 4096);
+         ++bits)
+      check(bits);
+  }
+  EXPECT_EQ(mismatches, 0u) << "of " << checked;
+  EXPECT_GT(checked, 10'000'000u);
+  for (float linear : {-0.0f, -1.0f, 1.5f, 1e30f, std::numeric_limits<float>::infinity(),
+                       -std::numeric_limits<float>::infinity(), std::nanf(""),
+                       std::numeric_limits<float>::denorm_min()})
+    EXPECT_EQ(linearToSrgb8(linear), reference(linear)) << linear;
+  EXPECT_EQ(linearToSrgb8(0.5f), 188);  // 0.7354 * 255 = 187.5
 }
 
 TEST(Srgb, EncodeRoundsAndClamps) {
