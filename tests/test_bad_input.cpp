@@ -859,7 +859,7 @@ const std::vector<BadCase>& badCases() {
       {Group::Outputs,
        "trace on a full disk",
        {},
-       "trace -o {dir}/t.png --size 128x128 --spp 1",
+       "trace -o {dir}/t.png --size 384x384 --spp 1",
        2,
        kError + "cannot write '{dir}/t.png': File too large",
        kSmallDisk},

@@ -1,12 +1,13 @@
 #pragma once
 // 8-bit PNG through libpng: the default output and the common input, without
 // loading OpenImageIO (oiio_module.h). Both directions reproduce what
-// OpenImageIO 2.4 did, so files and decoded pixels stay bit-identical:
-// the writer emits OpenImageIO's chunks (gAMA/sRGB/cHRM, oFFs, the
-// "oiio:ColorSpace" text that tells OpenImageIO readers the file is sRGB)
-// with its zlib level and strategy, and un-associates alpha as it did; the reader expands palette,
-// grey below 8 bits and tRNS like png_set_expand and associates alpha the
-// way OpenImageIO's PNG reader does.
+// OpenImageIO 2.4 did, so decoded pixels stay bit-identical: the writer
+// emits OpenImageIO's chunks (gAMA/sRGB/cHRM, oFFs, the "oiio:ColorSpace"
+// text that tells OpenImageIO readers the file is sRGB) with its zlib level
+// and strategy, and un-associates alpha as it did, but filters every row
+// with Sub (png_codec.cpp says why); the reader expands palette, grey below
+// 8 bits and tRNS like png_set_expand and associates alpha the way
+// OpenImageIO's PNG reader does.
 #include <cstdint>
 #include <optional>
 #include <string>
