@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Fuzzes the glTF loader with libFuzzer (clang-14 with ASan and UBSan, the
-# `fuzz` preset) for SECONDS (default 60), after the mutation replay every
-# build runs; seeds from tests/fuzz/corpus, keys from tests/fuzz/gltf.dict.
+# Fuzzes the glTF loader and the scene file parser with libFuzzer (clang-14
+# with ASan and UBSan, the `fuzz` preset) for SECONDS each (default 60),
+# after the mutation replays every build runs; seeds from tests/fuzz/corpus
+# and assets/scenes, keys from tests/fuzz/gltf.dict and scene.dict.
 #   scripts/fuzz.sh [SECONDS]     (CMAKE_BUILD_PARALLEL_LEVEL: build jobs, default 2)
 # Installs clang-14 and its runtime libraries if missing; the project's
 # other packages come from scripts/setup.sh. Exit 0: no crash. libFuzzer's
