@@ -2,6 +2,7 @@
 // the level-of-detail formulas (chord error, projected size).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -213,6 +214,69 @@ TEST(LevelOfDetail, SimplificationKeepsMoreTrianglesWhenNearer) {
   uint64_t near = keptAt(2.5f), far = keptAt(40.0f);
   EXPECT_LT(far, near);
   EXPECT_LT(far, makeUvSphere(1.0f, 128, 64).triangleCount() / 4);
+}
+
+// --lod auto's chain: each level about half the triangles of the one before,
+// over the mesh's own vertices, with errors that only rise.
+TEST(LevelOfDetail, ChainHalvesTrianglesWithRisingErrors) {
+  Mesh sphere = makeUvSphere(1.0f, 128, 64);
+  std::vector<MeshLevel> levels = simplifiedLevels(sphere);
+  ASSERT_GE(levels.size(), 4u);
+  size_t previousTriangles = sphere.indices.size() / 3;
+  float previousError = 0.0f;
+  for (const MeshLevel& level : levels) {
+    size_t triangles = level.indices.size() / 3;
+    EXPECT_EQ(level.indices.size() % 3, 0u);
+    EXPECT_LE(triangles * 10, previousTriangles * 9);  // each level gains at least a tenth
+    EXPECT_GE(triangles, 128u);                        // half of the 256 floor at most
+    EXPECT_GT(level.error, previousError);
+    EXPECT_LT(level.error, 1.0f);  // within the unit sphere's radius
+    EXPECT_TRUE(std::all_of(level.indices.begin(), level.indices.end(),
+                            [&](uint32_t i) { return i < sphere.vertices.size(); }));
+    previousTriangles = triangles;
+    previousError = level.error;
+  }
+  EXPECT_TRUE(simplifiedLevels(Mesh{}).empty());
+  EXPECT_TRUE(simplifiedLevels(makeUvSphere(1.0f, 8, 4)).empty());  // too few to halve
+}
+
+// The choice: never above the bound; the coarsest within it on a first
+// frame; and no switching back and forth for an error near the bound.
+TEST(LevelOfDetail, LevelChoiceKeepsTheBoundWithHysteresis) {
+  const std::vector<float> errors{0.0f, 0.2f, 0.6f, 1.5f, 4.0f};  // pixels, bound 1
+  EXPECT_EQ(chooseLevel(errors, kNoLevel, 1.0f), 2u);
+  EXPECT_EQ(chooseLevel(errors, 2, 1.0f), 2u);
+  EXPECT_EQ(chooseLevel(errors, 0, 1.0f), 2u);  // coarser: 0.6 is under 0.75 of the bound
+  EXPECT_EQ(chooseLevel(errors, 4, 1.0f), 2u);  // 4 px is over: back to the coarsest within
+  // Level 2 at 0.9 px fits the bound but not the hysteresis: from level 1 it
+  // stays at 1; from 2 it stays at 2; a first frame takes 2.
+  const std::vector<float> near{0.0f, 0.3f, 0.9f, 3.0f};
+  EXPECT_EQ(chooseLevel(near, 1, 1.0f), 1u);
+  EXPECT_EQ(chooseLevel(near, 2, 1.0f), 2u);
+  EXPECT_EQ(chooseLevel(near, kNoLevel, 1.0f), 2u);
+  // An error wobbling around the bound (an object at the switching
+  // distance): at most one switch, whatever the order.
+  uint32_t level = kNoLevel, switches = 0;
+  for (int frame = 0; frame < 100; ++frame) {
+    float wobble = frame % 2 ? 1.02f : 0.98f;
+    const std::vector<float> projected{0.0f, 0.5f * wobble, 1.0f * wobble, 2.0f * wobble};
+    uint32_t next = chooseLevel(projected, level, 1.0f);
+    switches += level != kNoLevel && next != level;
+    level = next;
+  }
+  EXPECT_LE(switches, 1u);
+  EXPECT_EQ(level, 1u);
+  // Any previous level, any rising errors: the chosen one is within the bound.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> step(0.0f, 1.0f);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<float> projected{0.0f};
+    for (int i = 0; i < 5; ++i) projected.push_back(projected.back() + step(random));
+    uint32_t previous = uint32_t(random() % 7);  // 6: no such level, as kNoLevel
+    uint32_t chosen = chooseLevel(projected, previous, 1.0f);
+    ASSERT_LT(chosen, projected.size());
+    EXPECT_LE(projected[chosen], 1.0f) << trial;
+  }
 }
 
 }  // namespace

@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <fstream>
 
+#include "core/metrics/metrics.h"
 #include "core/scene/lod.h"
+#include "core/scene/mesh.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/transform.h"
 #include "gpu_test_support.h"
@@ -295,6 +297,56 @@ TEST_F(GltfRender, AutoTessellationTableForTheBuiltinScenes) {
     EXPECT_GT(row.difference.psnr, 35.0) << name;
   }
   printTable("--tess auto 0.5 px at 640x360, against 4x the base tessellation", rows);
+}
+
+// --lod auto on a row of finely tessellated balls (custom meshes, as loaded
+// ones are) going into the distance: far fewer triangles, and the image
+// within a mean FLIP of 0.01 of the full meshes at the 0.5 px bound. The
+// must-fail side: a 40 px bound takes coarse levels the metric does see.
+TEST_F(GltfRender, LevelsOfDetailDrawFewerTrianglesWithinTheBound) {
+  Scene scene;
+  scene.camera.eye = glm::vec3(0.0f, 1.5f, 6.0f);
+  scene.camera.at = glm::vec3(0.0f, 0.5f, -10.0f);
+  scene.lights.push_back(Light{});
+  scene.lights.back().type = LightType::Directional;
+  scene.lights.back().direction = glm::vec3(-1.0f, -2.0f, -1.5f);
+  uint32_t ball = scene.addMesh(makeUvSphere(1.0f, 128, 64));
+  for (int i = 0; i < 6; ++i) {
+    Material material;
+    material.kd = glm::vec3(0.8f, 0.3f + 0.1f * float(i), 0.2f);
+    material.ks = glm::vec3(0.5f);
+    material.shininess = 40.0f;
+    glm::mat4 transform = translation(glm::vec3(i % 2 ? 1.5f : -1.5f, 0.0f, -6.0f * float(i)));
+    scene.objects.push_back({"ball " + std::to_string(i), ball, transform, material});
+  }
+  auto draw = [&](bool lod, float bound, RenderStats* stats) {
+    RenderSettings settings{640, 360, ShadingModel::Phong};
+    settings.lod = lod;
+    settings.lodErrorPixels = bound;
+    RenderResult result = renderer().renderToImage(scene, settings);
+    if (stats) *stats = result.stats;
+    return encodeSrgb8(result.image);
+  };
+  RenderStats full, fine, coarse;
+  ImageU8 reference = draw(false, 0.5f, &full);
+  ImageU8 atHalfPixel = draw(true, 0.5f, &fine);
+  ImageU8 atFortyPixels = draw(true, 40.0f, &coarse);
+  EXPECT_EQ(full.coarserDraws, 0u);
+  EXPECT_EQ(full.triangles, scene.triangleCount());
+  EXPECT_GE(fine.coarserDraws, 4u);  // the nearest one or two stay whole
+  EXPECT_LT(fine.triangles * 3, full.triangles);
+  EXPECT_LT(coarse.triangles, fine.triangles);
+  double fineError = flipError(reference, atHalfPixel).mean;
+  double coarseError = flipError(reference, atFortyPixels).mean;
+  std::printf("lod: %llu -> %llu triangles at 0.5 px (mean FLIP %.4f), %llu at 40 px (%.4f)\n",
+              static_cast<unsigned long long>(full.triangles),
+              static_cast<unsigned long long>(fine.triangles), fineError,
+              static_cast<unsigned long long>(coarse.triangles), coarseError);
+  EXPECT_LT(fineError, 0.01);
+  EXPECT_GT(coarseError, 2.0 * fineError);
+  // Drawing the same frame again (the levels drawn last time as the
+  // hysteresis' start) changes nothing in a still view.
+  EXPECT_EQ(draw(true, 0.5f, nullptr).pixels, atHalfPixel.pixels);
 }
 
 }  // namespace

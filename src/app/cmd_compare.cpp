@@ -152,12 +152,18 @@ std::vector<DrawnColumn> drawColumns(Renderer& renderer, const Scene& scene,
 }
 
 // Two lines under a column's picture: its settings, for a sheet read alone.
+// 0.5 -> "0.5", 2 -> "2": the shortest of up to three decimals.
+std::string compactNumber(float value) {
+  std::string text = fixed(value, 3);
+  text.erase(text.find_last_not_of('0') + 1);
+  if (text.back() == '.') text.pop_back();
+  return text;
+}
+
 std::vector<std::string> settingsLines(const CompareColumn& column) {
   const FrameSettings& s = column.settings;
   std::string tess =
-      column.autoTessellation ? "auto" : fixed(column.tessellation.value_or(1.0f), 3);
-  tess.erase(tess.find_last_not_of('0') + 1);
-  if (tess.back() == '.') tess.pop_back();
+      column.autoTessellation ? "auto" : compactNumber(column.tessellation.value_or(1.0f));
   std::string filter =
       s.textures.filterOverride ? textureFilterName(*s.textures.filterOverride) : "material";
   std::string shadows(nameOf(kShadowMethodNames, s.shadows));
@@ -167,7 +173,8 @@ std::vector<std::string> settingsLines(const CompareColumn& column) {
               std::to_string(s.msaaSamples),
           std::string(depthModeName(s.depth)) + "  env " + (s.environment ? "on" : "off") +
               "  bump " + (s.textures.bump ? "on" : "off"),
-          "filter " + filter, "shadows " + shadows};
+          "filter " + filter + (s.lod ? "  lod " + compactNumber(s.lodErrorPixels) + " px" : ""),
+          "shadows " + shadows};
 }
 
 // What a compare run measures, checked before any device is opened.
@@ -382,7 +389,8 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
                    "pairs, a bare word being the model: \"name=fine,phong,tess=4,msaa=4\". Keys: "
                    "name (default: the spec), mode, tess (0.125..16, auto), msaa (1, 4), filter "
                    "(material, nearest, bilinear, trilinear, aniso), env, bump (on, off), depth "
-                   "(d16, d24, d32f, reversed), shadows (off, hard, pcf3, pcf5), shadow-size")
+                   "(d16, d24, d32f, reversed), shadows (off, hard, pcf3, pcf5), shadow-size, lod "
+                   "(off or an error bound in pixels: as render --lod auto --lod-error)")
       ->excludes(modes)
       ->allow_extra_args(false);
   command

@@ -271,6 +271,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.shadowBias = look.shadowBias;
     settings.keepShadowMaps = look.keepShadowMaps;
     settings.materialConstants = look.materialConstants;
+    settings.lod = look.lod;
+    settings.lodErrorPixels = look.lodErrorPixels;
     if (!cameras.empty())
       written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
     else
@@ -280,11 +282,14 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   if (!cameras.empty())
     return reportSequence(options, scene, settings, point, written, result.stats, global, *context);
   writeImage(result.image, options.output);
-  std::fprintf(out, "wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled)\n",
+  std::string levels = settings.lod ? ", " + std::to_string(result.stats.coarserDraws) +
+                                          " at a coarser level of detail"
+                                    : "";
+  std::fprintf(out, "wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled%s)\n",
                options.output.c_str(), size.width, size.height, scene.name.c_str(),
                std::string(shadingModelName(point.model)).c_str(),
                static_cast<unsigned long long>(result.stats.triangles), result.stats.drawCalls,
-               result.stats.culledDraws);
+               result.stats.culledDraws, levels.c_str());
   FrameTimings timings = frameTimings(result.stats);
   if (options.frames > 1) printTimings(timings, result.stats.shadowDraws, out);
   nlohmann::json json = {{"scene", scene.name},
@@ -293,6 +298,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
                          {"triangles", result.stats.triangles},
                          {"draw_calls", result.stats.drawCalls},
                          {"culled_draws", result.stats.culledDraws},
+                         {"coarser_draws", result.stats.coarserDraws},
                          {"device_memory_bytes", result.stats.deviceMemoryBytes},
                          {"outputs", {{"image", jsonPath(options.output)}}}};
   json["settings"]["frames"] = settings.frames;

@@ -95,6 +95,7 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
                    "Initial tessellation scale 0.125..16 as for render, or auto: for the "
                    "initial view, chord error <= 0.5 px (T, G and A change it)")
       ->capture_default_str();
+  options->look.lod = "auto";  // the viewer picks levels of detail unless told not to
   addLookOptions(command, options->look);
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()

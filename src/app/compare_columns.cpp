@@ -12,7 +12,8 @@
 namespace shadelab {
 namespace {
 
-const char* const kKeys = "name, mode, tess, msaa, filter, env, bump, depth, shadows, shadow-size";
+const char* const kKeys =
+    "name, mode, tess, msaa, filter, env, bump, depth, shadows, shadow-size, lod";
 
 std::vector<std::string> splitOn(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -114,6 +115,13 @@ class SpecReader {
       std::optional<uint32_t> size = number<uint32_t>(value);
       if (!size || *size < 1 || *size > 16384) badValue(key, value, "a map size from 1 to 16384");
       settings.shadowMapSize = *size;
+    } else if (key == "lod") {
+      settings.lod = value != "off";
+      if (!settings.lod) return;
+      std::optional<float> bound = number<float>(value);
+      if (!bound || !(*bound >= 0.01f && *bound <= 100.0f))
+        badValue(key, value, "off or an error bound in pixels from 0.01 to 100");
+      settings.lodErrorPixels = *bound;
     } else {
       fail("unknown key '" + key + "': expected one of " + kKeys);
     }
@@ -171,7 +179,8 @@ bool drawableAsOneSplitFrame(const std::vector<CompareColumn>& columns) {
     return !column.tessellation && !column.autoTessellation && a.msaaSamples == b.msaaSamples &&
            a.textures.filterOverride == b.textures.filterOverride &&
            a.textures.bump == b.textures.bump && a.environment == b.environment &&
-           a.depth == b.depth && a.shadows == b.shadows && a.shadowMapSize == b.shadowMapSize;
+           a.depth == b.depth && a.shadows == b.shadows && a.shadowMapSize == b.shadowMapSize &&
+           a.lod == b.lod && a.lodErrorPixels == b.lodErrorPixels;
   };
   return std::all_of(columns.begin(), columns.end(), sameButModel);
 }
@@ -191,7 +200,8 @@ nlohmann::json columnSettingsJson(const CompareColumn& column) {
           {"environment", settings.environment},
           {"bump", settings.textures.bump},
           {"shadows", std::string(nameOf(kShadowMethodNames, settings.shadows))},
-          {"shadow_map_size", settings.shadowMapSize}};
+          {"shadow_map_size", settings.shadowMapSize},
+          {"lod", settings.lod ? nlohmann::json(settings.lodErrorPixels) : nlohmann::json("off")}};
 }
 
 }  // namespace shadelab

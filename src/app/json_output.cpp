@@ -78,6 +78,7 @@ nlohmann::json toJson(const FrameSettings& settings) {
       {"shadows", std::string(nameOf(kShadowMethodNames, settings.shadows))},
       {"shadow_map_size", settings.shadowMapSize},
       {"shadow_cache", settings.keepShadowMaps},
+      {"lod", settings.lod ? nlohmann::json(settings.lodErrorPixels) : nlohmann::json("off")},
       {"shadow_bias",
        {{"constant", settings.shadowBias.constant},
         {"slope", settings.shadowBias.slope},

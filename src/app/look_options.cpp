@@ -80,6 +80,18 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
                              kOnOffNames))
       ->capture_default_str();
   options.shadows.add(command);
+  command
+      ->add_option("--lod", options.lod,
+                   "Levels of detail chosen every frame: each loaded mesh drawn at the coarsest "
+                   "of its simplified levels whose error stays within --lod-error (auto), or in "
+                   "full (off)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "off"}));
+  command
+      ->add_option("--lod-error", options.lodError,
+                   "Screen-space error bound of --lod auto, in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01f, 100.0f));
 }
 
 void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
@@ -91,6 +103,8 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
   settings.materialConstants =
       parseNamed(kOnOffNames, options.materialConstants, "--material-constants");
   options.shadows.apply(settings);
+  settings.lod = options.lod == "auto";
+  settings.lodErrorPixels = options.lodError;
 }
 
 float parseTessellationFactor(const std::string& text) {

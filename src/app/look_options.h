@@ -32,6 +32,8 @@ struct LookOptions {
   bool mipTint = false;
   std::string materialConstants = "on";  // --material-constants
   ShadowOptions shadows;                 // --shadows, --shadow-size, the bias options
+  std::string lod = "off";               // --lod auto|off (view sets "auto" before adding)
+  float lodError = 0.5f;                 // --lod-error, pixels
 };
 
 void addLookOptions(CLI::App* command, LookOptions& options);

@@ -10,6 +10,7 @@
 #include "core/base/errors.h"
 #include "core/base/split_screen.h"
 #include "core/scene/frustum.h"
+#include "core/scene/lod.h"
 #include "core/vulkan/barriers.h"
 #include "core/vulkan/vk_check.h"
 
@@ -283,7 +284,8 @@ GpuScene Renderer::upload(const Scene& scene, const SceneUploadOptions& options)
   context_.waitIdle();
   ++uploadCount_;
   settingsApplied_ = false;  // the material sets and pipelines depend on the scene
-  GpuScene gpuScene = uploadScene(context_, scene);
+  GpuScene gpuScene = uploadScene(context_, scene, options.detailChains);
+  drawnLevels_.assign(scene.objects.size(), kNoLevel);
   textures_.upload(scene, gpuScene);
   billboards_.upload(gpuScene);
   bindEnvironment(scene, options.environmentCube);
@@ -395,6 +397,8 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
   std::vector<DrawItem> draws =
       visibleDraws(scene, view, projection, settings.frustumCulling, stats.culledDraws);
+  stats.coarserDraws = 0;
+  if (settings.lod) chooseLevels(scene, source, draws, stats);
   stats.drawCalls = uint32_t(draws.size());
   stats.triangles = 0;
   for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
@@ -493,6 +497,29 @@ void Renderer::recordTransparent(VkCommandBuffer cmd, ShadingModel model,
   }
 }
 
+void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
+                            std::vector<DrawItem>& draws, RenderStats& stats) {
+  ViewSize view{source.camera, settings_.width, settings_.height};
+  std::vector<float> projected;
+  for (DrawItem& draw : draws) {
+    if (draw.levelCount == 0) continue;
+    // Pixels per world unit at the nearest point of the object's box.
+    float pixels =
+        pixelsPerUnitForSphere(view, centre(draw.worldBounds), boundingRadius(draw.worldBounds)) *
+        draw.objectScale;
+    projected.assign(1, 0.0f);
+    for (uint32_t i = 0; i < draw.levelCount; ++i)
+      projected.push_back(scene.levels[draw.firstLevel + i].error * pixels);
+    uint32_t& drawn = drawnLevels_[uint32_t(draw.constants.object.x)];
+    drawn = chooseLevel(projected, drawn, settings_.lodErrorPixels);
+    if (drawn == 0) continue;
+    const DrawLevel& level = scene.levels[draw.firstLevel + drawn - 1];
+    draw.firstIndex = level.firstIndex;
+    draw.indexCount = level.indexCount;
+    ++stats.coarserDraws;
+  }
+}
+
 void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene,
                              const Scene& source, const glm::mat4& view,
                              const glm::mat4& projection, RenderStats& stats) {
@@ -573,7 +600,8 @@ void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>&
 RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& settings) {
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
   // A cube the settings would not draw is not built.
-  GpuScene gpuScene = upload(scene, {.environmentCube = settings.environment});
+  GpuScene gpuScene =
+      upload(scene, {.environmentCube = settings.environment, .detailChains = settings.lod});
   applyFrameSettings(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
@@ -596,7 +624,8 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
 RenderStats Renderer::renderSequence(const Scene& scene, const FrameSettings& settings,
                                      const std::vector<Camera>& cameras,
                                      const std::function<void(uint32_t, ImageRgba&&)>& onFrame) {
-  GpuScene gpuScene = upload(scene, {.environmentCube = settings.environment});
+  GpuScene gpuScene =
+      upload(scene, {.environmentCube = settings.environment, .detailChains = settings.lod});
   applyFrameSettings(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);

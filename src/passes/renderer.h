@@ -32,6 +32,9 @@ struct SceneUploadOptions {
   // FrameSettings::environment has nothing to draw. The viewer builds it so
   // that E is a per-frame switch; renderToImage only when its settings use it.
   bool environmentCube = true;
+  // Build each loaded mesh's chain of simplified levels (FrameSettings::lod
+  // draws from it; without a chain every object is drawn in full).
+  bool detailChains = false;
 };
 
 // How a frame is drawn. Renderer::applyFrameSettings validates them once,
@@ -75,6 +78,12 @@ struct FrameSettings {
   // off reads them from push constants. A few linear values may differ by
   // one RGBA16F step between the two (tests/test_gltf_render.cpp).
   bool materialConstants = true;
+  // --lod auto: each object with a detail chain (SceneUploadOptions) is
+  // drawn at the coarsest level whose error, projected at the object's
+  // nearest point, stays within lodErrorPixels (with hysteresis between
+  // frames: core/scene/lod.h, chooseLevel). Shadow maps keep the full meshes.
+  bool lod = false;
+  float lodErrorPixels = 0.5f;
 };
 
 // renderToImage: one scene, uploaded once, drawn `frames` times.
@@ -95,6 +104,7 @@ struct RenderStats {
   uint32_t culledDraws = 0;         // objects outside the view frustum, not drawn
   uint32_t billboardInstances = 0;  // drawn per frame (after culling), in drawCalls' draws
   uint32_t culledInstances = 0;     // billboard instances outside the view frustum
+  uint32_t coarserDraws = 0;        // --lod auto: draws at a simplified level, per frame
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;
@@ -244,6 +254,9 @@ class Renderer {
                          const GpuScene& scene, std::span<const DrawItem> transparent,
                          const BillboardFrame& billboards, const glm::mat4& view,
                          const VkViewport& viewport) const;
+  // --lod auto: each draw's level for this frame, in place of its full range.
+  void chooseLevels(const GpuScene& scene, const Scene& source, std::vector<DrawItem>& draws,
+                    RenderStats& stats);
   void recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene, const Scene& source,
                      const glm::mat4& view, const glm::mat4& projection, RenderStats& stats);
 
@@ -263,8 +276,9 @@ class Renderer {
   double lastCompletion_ = 0.0;
   std::array<Target, kFramesInFlight> targets_;  // by frame slot
   TargetShape targetShape_;
-  FrameSettings settings_;        // as last applied
-  bool settingsApplied_ = false;  // since the last upload
+  std::vector<uint32_t> drawnLevels_;  // by object: the level of its last frame (--lod auto)
+  FrameSettings settings_;             // as last applied
+  bool settingsApplied_ = false;       // since the last upload
   uint32_t uploadCount_ = 0;
 };
 

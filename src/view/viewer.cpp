@@ -154,7 +154,7 @@ void Viewer::run() {
 }
 
 void Viewer::uploadScene() {
-  gpuScene_ = renderer_.upload(scene_, {.environmentCube = true});
+  gpuScene_ = renderer_.upload(scene_, {.environmentCube = true, .detailChains = settings_.lod});
   renderer_.applyFrameSettings(gpuScene_, settings_);
 }
 
@@ -330,6 +330,7 @@ bool Viewer::drawFrame() {
   RenderStats counts;
   renderer_.recordScene(gpuScene_, scene_, counts);
   submittedTriangles_ = counts.triangles;
+  coarserDraws_ = counts.coarserDraws;
 
   SlotWork& work = slotWork_[slot];
   // Against Phong, every metricsInterval frames; against a traced reference,

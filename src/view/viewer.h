@@ -152,6 +152,7 @@ class Viewer {
   std::deque<double> deviceMs_, frameDeviceMs_, wallMs_, shadowMs_;  // the last 120 frames
   uint64_t framesDrawn_ = 0;
   uint64_t submittedTriangles_ = 0;  // last frame, after frustum culling, per view
+  uint32_t coarserDraws_ = 0;        // last frame: draws at a simplified level (--lod)
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;
   std::vector<SplitError> splitErrors_;
   bool splitErrorsAgainstReference_ = false;

@@ -133,4 +133,44 @@ SimplifyStats simplifyForView(Scene& scene, const ViewSize& view, float maxError
   return stats;
 }
 
+std::vector<MeshLevel> simplifiedLevels(const Mesh& mesh, uint32_t minTriangles) {
+  std::vector<MeshLevel> levels;
+  if (mesh.indices.empty() || mesh.vertices.empty()) return levels;
+  // meshopt_simplify's errors are relative to the mesh's extent.
+  float scale =
+      meshopt_simplifyScale(&mesh.vertices[0].position.x, mesh.vertices.size(), sizeof(Vertex));
+  const std::vector<uint32_t>* source = &mesh.indices;
+  while (source->size() / 3 / 2 >= minTriangles) {
+    size_t target = source->size() / 2 / 3 * 3;
+    std::vector<uint32_t> indices(source->size());
+    float relative = 0.0f;
+    // Each level from the one before (cheaper than from the full mesh each
+    // time); the error bound is 1, the whole extent: the count is the goal.
+    size_t count = meshopt_simplify(indices.data(), source->data(), source->size(),
+                                    &mesh.vertices[0].position.x, mesh.vertices.size(),
+                                    sizeof(Vertex), target, 1.0f, 0, &relative);
+    if (count < 3 || count * 10 > source->size() * 9) break;
+    indices.resize(count);
+    meshopt_optimizeVertexCache(indices.data(), indices.data(), count, mesh.vertices.size());
+    // Errors add up along the chain (each level measured against the one before).
+    float previous = levels.empty() ? 0.0f : levels.back().error;
+    levels.push_back({std::move(indices), previous + relative * scale});
+    source = &levels.back().indices;
+  }
+  return levels;
+}
+
+uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, float bound) {
+  auto coarsestWithin = [&](float limit) {
+    uint32_t level = 0;
+    for (uint32_t i = 1; i < projectedErrors.size(); ++i)
+      if (projectedErrors[i] <= limit) level = i;
+    return level;
+  };
+  if (previous >= projectedErrors.size()) return coarsestWithin(bound);
+  uint32_t coarser = coarsestWithin(kLodHysteresis * bound);
+  if (projectedErrors[previous] <= bound && previous >= coarser) return previous;
+  return previous < coarser ? coarser : coarsestWithin(bound);
+}
+
 }  // namespace shadelab

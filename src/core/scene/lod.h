@@ -3,6 +3,8 @@
 // it appears. Both functions take a screen-space error bound in pixels and
 // turn it into a world-space length at each object's nearest point.
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "core/scene/scene.h"
 
@@ -42,5 +44,30 @@ struct SimplifyStats {
 // until its geometric error, projected at the object's nearest point, would
 // exceed maxErrorPixels; then re-ordered for the vertex cache and fetch.
 SimplifyStats simplifyForView(Scene& scene, const ViewSize& view, float maxErrorPixels);
+
+// A level of a mesh's detail chain: a subset of its triangles over the same
+// vertices (meshopt_simplify), and the geometric error that cost, in the
+// mesh's own units.
+struct MeshLevel {
+  std::vector<uint32_t> indices;
+  float error = 0.0f;
+};
+// The chain --lod auto draws from, built once at upload: each level aims at
+// half the triangles of the one before, until a level would have fewer than
+// `minTriangles` or simplification stops gaining (a level must drop at least
+// a tenth of the previous one's triangles). Errors rise along the chain;
+// the full mesh (level 0, error 0) is not included.
+std::vector<MeshLevel> simplifiedLevels(const Mesh& mesh, uint32_t minTriangles = 256);
+
+// The level to draw this frame from each level's error projected to pixels
+// (level 0 first, the full mesh, 0), the level drawn last frame (`previous`;
+// kNoLevel on the first) and the bound in pixels: never a level whose error
+// exceeds the bound; the coarsest within it on a first frame; afterwards
+// the previous level while it stays within the bound, and a coarser one only
+// once its error is below kLodHysteresis times the bound, so an object at
+// the threshold does not switch back and forth.
+constexpr uint32_t kNoLevel = ~0u;
+constexpr float kLodHysteresis = 0.75f;
+uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, float bound);
 
 }  // namespace shadelab

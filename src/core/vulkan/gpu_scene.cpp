@@ -8,6 +8,7 @@
 
 #include "core/scene/frustum.h"
 #include "core/scene/lighting.h"
+#include "core/scene/lod.h"
 #include "core/scene/transform.h"
 #include "core/scene/uv_mapping.h"
 
@@ -69,7 +70,8 @@ bool hasTangents(const Mesh& mesh) {
 
 }  // namespace
 
-GpuScene uploadScene(const Context& context, const Scene& scene) {
+GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChains) {
+  GpuScene gpuScene;
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;
   auto append = [&](const Mesh& mesh) {
@@ -80,9 +82,20 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     indices.insert(indices.end(), order.begin(), order.end());
     return range;
   };
+  // A chain's levels index the mesh's own vertices, after its full range.
+  auto appendLevels = [&](const Mesh& mesh, DrawItem& range) {
+    range.firstLevel = uint32_t(gpuScene.levels.size());
+    for (MeshLevel& level : simplifiedLevels(mesh)) {
+      gpuScene.levels.push_back(
+          {uint32_t(indices.size()), uint32_t(level.indices.size()), level.error});
+      indices.insert(indices.end(), level.indices.begin(), level.indices.end());
+    }
+    range.levelCount = uint32_t(gpuScene.levels.size()) - range.firstLevel;
+  };
   std::vector<DrawItem> meshRanges;
   std::vector<Bounds> meshBounds;
-  for (const Mesh& mesh : scene.meshes) {
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
     meshBounds.push_back(computeBounds(mesh));
     if (!hasTangents(mesh)) {
       Mesh withTangents = mesh;
@@ -91,6 +104,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     } else {
       meshRanges.push_back(append(mesh));
     }
+    if (detailChains && m < scene.shapes.size() && scene.shapes[m].kind == ShapeKind::Custom)
+      appendLevels(mesh, meshRanges.back());
   }
   // One projected copy per (mesh, projection) in use.
   std::map<std::pair<uint32_t, UvProjection>, DrawItem> projectedRanges;
@@ -102,7 +117,6 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     applyUvProjection(projected, projection);
     projectedRanges[{object.mesh, projection}] = append(projected);
   }
-  GpuScene gpuScene;
   gpuScene.lights = lightLayoutOf(scene);
   gpuScene.vertices =
       uploadBuffer(context, std::as_bytes(std::span(vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
@@ -135,6 +149,10 @@ GpuScene uploadScene(const Context& context, const Scene& scene) {
     draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0,
                                        uvTransform ? MATERIAL_UV_TRANSFORM : 0);
     draw.castsShadows = object.castsShadows;
+    // The largest factor the transform stretches a length by.
+    draw.objectScale = std::max({glm::length(glm::vec3(object.transform[0])),
+                                 glm::length(glm::vec3(object.transform[1])),
+                                 glm::length(glm::vec3(object.transform[2]))});
     draw.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, diffuseUv.rotation);
     draw.constants.optics =
         glm::vec4(material.reflectivity, material.transparency, material.ior, normalUv.rotation);

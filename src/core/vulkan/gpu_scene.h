@@ -34,6 +34,20 @@ struct DrawItem {
   bool masked = false;
   bool hidden = false;
   bool doubleSided = false;  // glTF doubleSided: drawn without culling, SPEC_DOUBLE_SIDED
+  // --lod auto: GpuScene::levels[firstLevel, firstLevel + levelCount) are
+  // this draw's coarser levels (none when its mesh has no chain), and
+  // objectScale turns their mesh-space errors into world lengths.
+  uint32_t firstLevel = 0;
+  uint32_t levelCount = 0;
+  float objectScale = 1.0f;
+};
+
+// A coarser level of a mesh (core/scene/lod.h, simplifiedLevels): its own
+// index range over the mesh's vertices, and its error in mesh units.
+struct DrawLevel {
+  uint32_t firstIndex = 0;
+  uint32_t indexCount = 0;
+  float error = 0.0f;
 };
 
 // One copy of a billboard, world space (Billboard::instances reduced to what
@@ -79,6 +93,7 @@ struct GpuScene {
   Buffer vertices;
   Buffer indices;
   std::vector<DrawItem> draws;
+  std::vector<DrawLevel> levels;  // every draw's coarser levels (DrawItem::firstLevel)
   uint64_t triangles = 0;
   LightLayout lights;
   bool anyTransparent = false;
@@ -97,7 +112,9 @@ struct GpuScene {
 
 // Objects whose material asks for a UV projection draw a copy of their mesh
 // with projected UVs; meshes without tangents get computed ones (mesh.h).
-GpuScene uploadScene(const Context& context, const Scene& scene);
+// With `detailChains`, every loaded (custom) mesh also gets its chain of
+// simplified levels, for --lod auto (core/scene/lod.h).
+GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChains = false);
 
 // The draws of one frame, the one place they are filtered and ordered:
 // draws whose box is outside the view frustum are dropped (counted in
