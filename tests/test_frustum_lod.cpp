@@ -9,6 +9,7 @@
 #include "core/scene/frustum.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene.h"
+#include "core/scene/shape.h"
 #include "core/scene/transform.h"
 
 namespace shadelab {
@@ -277,6 +278,34 @@ TEST(LevelOfDetail, LevelChoiceKeepsTheBoundWithHysteresis) {
     ASSERT_LT(chosen, projected.size());
     EXPECT_LE(projected[chosen], 1.0f) << trial;
   }
+}
+
+// A procedural shape's chain: half the tessellation each time, down to its
+// kind's coarsest, with the chord error --tess auto bounds rising.
+TEST(LevelOfDetail, ShapeChainHalvesTessellationWithRisingErrors) {
+  ShapeDesc sphere{.kind = ShapeKind::UvSphere, .radius = 2.0f, .tessellation = 64};
+  std::vector<ShapeLevel> levels = tessellationLevels(sphere);
+  ASSERT_EQ(levels.size(), 4u);  // 32, 16, 8, 4
+  float previous = 0.0f;
+  uint32_t tessellation = 64;
+  for (const ShapeLevel& level : levels) {
+    EXPECT_EQ(level.shape.tessellation, tessellation / 2);
+    tessellation = level.shape.tessellation;
+    EXPECT_GT(level.error, previous);
+    // The level's error is the bound --tess auto would choose it for (up
+    // to float rounding at the exact boundary).
+    EXPECT_LE(segmentsForChordError(2.0f, level.error * 1.0001f), tessellation);
+    previous = level.error;
+  }
+  EXPECT_NEAR(levels[0].error, 2.0f * (1.0f - std::cos(3.14159265f / 32.0f)), 1e-6f);
+  ShapeDesc icosphere{.kind = ShapeKind::Icosphere, .radius = 1.0f, .tessellation = 3};
+  ASSERT_EQ(tessellationLevels(icosphere).size(), 3u);  // levels 2, 1, 0
+  EXPECT_EQ(tessellationLevels(icosphere).back().shape.tessellation, 0u);
+  ShapeDesc teapot{.kind = ShapeKind::Teapot, .tessellation = 8};
+  EXPECT_EQ(tessellationLevels(teapot).size(), 3u);  // 4, 2, 1
+  EXPECT_TRUE(tessellationLevels({.kind = ShapeKind::Box}).empty());
+  EXPECT_TRUE(tessellationLevels({.kind = ShapeKind::Plane, .tessellation = 64}).empty());
+  EXPECT_TRUE(tessellationLevels({.kind = ShapeKind::Custom}).empty());
 }
 
 }  // namespace

@@ -41,11 +41,13 @@ class Viewer : public GpuTest {
   CommandResult view(const std::string& script, const std::string& options = "",
                      const std::string& environment = "", const std::string& size = "320x180") {
     std::ofstream(path("script.txt")) << script;
-    // The headless renders compared against use FrameSettings' default,
-    // shadows off; the CLI's default is hard, so pin it unless a test sets it.
+    // The headless renders compared against use FrameSettings' defaults,
+    // shadows off and levels of detail off; the viewer's are hard and auto,
+    // so pin them unless a test sets them.
     std::string shadows = options.find("--shadows") == std::string::npos ? " --shadows off" : "";
-    return run("view " + options + shadows + " --size " + size + " --present immediate --script " +
-                   path("script.txt"),
+    std::string lod = options.find("--lod") == std::string::npos ? " --lod off" : "";
+    return run("view " + options + shadows + lod + " --size " + size +
+                   " --present immediate --script " + path("script.txt"),
                "cd " + dir.string() + " &&" + environment);
   }
   ImageU8 headless(Scene scene, ShadingModel model, std::vector<ShadingModel> split = {}) {
@@ -55,6 +57,31 @@ class Viewer : public GpuTest {
   }
   fs::path dir;
 };
+
+// The viewer's default, --lod auto at 0.5 px, draws what a headless render
+// with the same setting draws (the first frame has no history; a still
+// view keeps its levels), and on the default scene it does take coarser
+// levels (the overlay's count is checked by the headless stats).
+TEST_F(Viewer, LevelsOfDetailMatchHeadlessRenderWithTheSameBound) {
+  CommandResult r = view("key O\nframes 3\nscreenshot lod.png\n", "--lod auto");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  Scene scene = builtinScene("default");
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
+  settings.lod = true;
+  RenderResult result = renderer().renderToImage(scene, settings);
+  EXPECT_GT(result.stats.coarserDraws, 0u);
+  ImageU8 shot = readImageU8(path("lod.png"));
+  ImageU8 withLevels = encodeSrgb8(result.image);
+  EXPECT_TRUE(matchesImage(withLevels, shot));
+  // Must fail: the full meshes draw another image (within the golden
+  // tolerance at 0.5 px, which is the point of the bound), so the shot is
+  // measured closer to the render with levels than to the one without.
+  double toLevels = compareImages(withLevels, shot).rmse;
+  double toFull = compareImages(headless(scene, ShadingModel::Phong), shot).rmse;
+  std::printf("lod shot: RMSE %.3f to the render with levels, %.3f to the full one\n", toLevels,
+              toFull);
+  EXPECT_LT(2.0 * toLevels, toFull);
+}
 
 TEST_F(Viewer, EachShadingModelMatchesHeadlessRender) {
   CommandResult r = view(

@@ -513,11 +513,17 @@ void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
     uint32_t& drawn = drawnLevels_[uint32_t(draw.constants.object.x)];
     drawn = chooseLevel(projected, drawn, settings_.lodErrorPixels);
     if (drawn == 0) continue;
-    const DrawLevel& level = scene.levels[draw.firstLevel + drawn - 1];
-    draw.firstIndex = level.firstIndex;
-    draw.indexCount = level.indexCount;
+    applyLevel(scene, draw, drawn);
     ++stats.coarserDraws;
   }
+}
+
+void Renderer::applyLevel(const GpuScene& scene, DrawItem& draw, uint32_t level) {
+  if (level == 0 || level > draw.levelCount) return;  // kNoLevel too: in full
+  const DrawLevel& range = scene.levels[draw.firstLevel + level - 1];
+  draw.firstIndex = range.firstIndex;
+  draw.indexCount = range.indexCount;
+  draw.vertexOffset = range.vertexOffset;
 }
 
 void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene,
@@ -530,9 +536,16 @@ void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& 
   std::vector<glm::mat4> transforms;
   transforms.reserve(source.objects.size());
   for (const Object& object : source.objects) transforms.push_back(object.transform);
-  stats.shadowDraws = shadow_.record(cmd, scene, uploadCount_, transforms, shadows.worldToLightClip,
-                                     textures_.materialSets(settings_.textures.filterOverride),
-                                     settings_.keepShadowMaps, settings_.shadowDepthClamp);
+  // Casters at the level the view draws them (objects out of view: their
+  // last one), so a simplified surface is not shadowed by its full self.
+  std::vector<DrawItem> casters = scene.draws;
+  if (settings_.lod)
+    for (DrawItem& draw : casters)
+      applyLevel(scene, draw, drawnLevels_[uint32_t(draw.constants.object.x)]);
+  stats.shadowDraws =
+      shadow_.record(cmd, scene, casters, uploadCount_, transforms, shadows.worldToLightClip,
+                     textures_.materialSets(settings_.textures.filterOverride),
+                     settings_.keepShadowMaps, settings_.shadowDepthClamp);
 }
 
 void Renderer::recordReadback(const Buffer& readback) {

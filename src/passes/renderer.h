@@ -81,7 +81,8 @@ struct FrameSettings {
   // --lod auto: each object with a detail chain (SceneUploadOptions) is
   // drawn at the coarsest level whose error, projected at the object's
   // nearest point, stays within lodErrorPixels (with hysteresis between
-  // frames: core/scene/lod.h, chooseLevel). Shadow maps keep the full meshes.
+  // frames: core/scene/lod.h, chooseLevel). Shadow maps draw each caster at
+  // the level the view drew it.
   bool lod = false;
   float lodErrorPixels = 0.5f;
 };
@@ -257,6 +258,8 @@ class Renderer {
   // --lod auto: each draw's level for this frame, in place of its full range.
   void chooseLevels(const GpuScene& scene, const Scene& source, std::vector<DrawItem>& draws,
                     RenderStats& stats);
+  // Level `level` of the draw's chain in place of its range (0: in full).
+  static void applyLevel(const GpuScene& scene, DrawItem& draw, uint32_t level);
   void recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene, const Scene& source,
                      const glm::mat4& view, const glm::mat4& projection, RenderStats& stats);
 

@@ -168,7 +168,8 @@ bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
   return true;
 }
 
-uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
+uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
+                            std::span<const DrawItem> draws, uint32_t sceneUpload,
                             std::span<const glm::mat4> objectTransforms,
                             std::span<const glm::mat4> worldToLightClip,
                             std::span<const VkDescriptorSet> materialSets, bool keep,
@@ -182,6 +183,7 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t
   // drawn from. With depth clamp a caster wholly before the near plane still
   // casts (flattened onto it), so only the side and far planes cull then; the
   // side planes alone already cull what lies behind the light.
+  assert(draws.size() == scene.draws.size());
   std::vector<std::vector<const DrawItem*>> casters(worldToLightClip.size());
   std::vector<size_t> toDraw;
   bool clamped = depthClamp && context_.features().depthClamp;
@@ -195,11 +197,13 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t
     };
     add(worldToLightClip[layer]);
     from.push_back(depthClamp ? 1 : 0);
-    for (const DrawItem& draw : scene.draws) {
+    for (const DrawItem& draw : draws) {
       if (!draw.castsShadows || draw.hidden || !boxIntersectsFrustum(draw.worldBounds, frustum))
         continue;
       casters[layer].push_back(&draw);
-      from.push_back(uint32_t(&draw - scene.draws.data()));
+      from.push_back(uint32_t(&draw - draws.data()));
+      from.push_back(draw.firstIndex);  // the level of detail drawn
+      from.push_back(uint32_t(draw.vertexOffset));
       add(objectTransforms[size_t(draw.constants.object.x)]);
       // A masked caster's holes depend on its texture's sampler (the filter override).
       if (isMaskedCaster(draw)) {

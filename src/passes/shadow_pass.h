@@ -34,16 +34,18 @@ class ShadowPass {
   // descriptors that read it). Waits for the device before replacing it.
   bool prepare(uint32_t layers, uint32_t size);
   // Depth of every caster of `scene` into each layer, seen through
-  // `worldToLightClip[layer]`; `objectTransforms` are the scene objects'
-  // model matrices; `materialSets` the textured draws' sets by
+  // `worldToLightClip[layer]`; `casters` are scene.draws as this frame draws
+  // them (--lod may have swapped in coarser index ranges, so a surface
+  // shadows itself exactly where it is drawn); `objectTransforms` are the
+  // scene objects' model matrices; `materialSets` the textured draws' sets by
   // DrawItem::material; `sceneUpload` tells uploads apart
   // (Renderer::uploadCount). With `keep`, layers whose inputs are unchanged
   // since their last draw are left as they are. Returns the caster draws
   // recorded (after culling). Without `depthClamp` a caster nearer than a
   // view's near plane is clipped away as in any other pass (only to measure
   // what clamping saves: study shadow-near).
-  uint32_t record(VkCommandBuffer cmd, const GpuScene& scene, uint32_t sceneUpload,
-                  std::span<const glm::mat4> objectTransforms,
+  uint32_t record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const DrawItem> casters,
+                  uint32_t sceneUpload, std::span<const glm::mat4> objectTransforms,
                   std::span<const glm::mat4> worldToLightClip,
                   std::span<const VkDescriptorSet> materialSets, bool keep, bool depthClamp = true);
 

@@ -160,6 +160,52 @@ std::vector<MeshLevel> simplifiedLevels(const Mesh& mesh, uint32_t minTriangles)
   return levels;
 }
 
+std::vector<ShapeLevel> tessellationLevels(const ShapeDesc& shape) {
+  // The chord error of a circle of radius r in n segments.
+  auto chord = [](float radius, uint32_t segments) {
+    return radius * (1.0f - std::cos(kPi / float(segments)));
+  };
+  std::vector<ShapeLevel> levels;
+  ShapeDesc level = shape;
+  for (;;) {
+    switch (shape.kind) {
+      case ShapeKind::UvSphere:
+      case ShapeKind::Torus:
+        if (level.tessellation / 2 < 3) return levels;
+        level.tessellation /= 2;
+        break;
+      case ShapeKind::Teapot:
+        if (level.tessellation / 2 < 1) return levels;
+        level.tessellation /= 2;
+        break;
+      case ShapeKind::Icosphere:
+        if (level.tessellation == 0) return levels;
+        level.tessellation -= 1;
+        break;
+      default:
+        return levels;
+    }
+    float error = 0.0f;
+    uint32_t n = level.tessellation;
+    switch (shape.kind) {
+      case ShapeKind::UvSphere:
+        error = chord(shape.radius, n);
+        break;
+      case ShapeKind::Torus:  // the ring's outer circle, and the tube in n / 2
+        error = std::max(chord(shape.majorRadius + shape.minorRadius, n),
+                         chord(shape.minorRadius, std::max(3u, n / 2)));
+        break;
+      case ShapeKind::Teapot:  // the body of radius 2, four patches around
+        error = chord(2.0f, 4 * n);
+        break;
+      default:  // icosphere: the sagitta of an edge, 1.107 rad at level 0
+        error = shape.radius * (1.0f - std::cos(1.1071487f / float(1u << n) * 0.5f));
+        break;
+    }
+    levels.push_back({level, error});
+  }
+}
+
 uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, float bound) {
   auto coarsestWithin = [&](float limit) {
     uint32_t level = 0;

@@ -59,6 +59,17 @@ struct MeshLevel {
 // the full mesh (level 0, error 0) is not included.
 std::vector<MeshLevel> simplifiedLevels(const Mesh& mesh, uint32_t minTriangles = 256);
 
+// The same for a procedural shape: the shape at half its tessellation, a
+// quarter, ... down to the coarsest its kind allows (an icosphere one level
+// fewer each time), each with its chord error against the true surface, in
+// the shape's units (the bound --tess auto meets). Planes and boxes are
+// exact and have no chain.
+struct ShapeLevel {
+  ShapeDesc shape;
+  float error = 0.0f;
+};
+std::vector<ShapeLevel> tessellationLevels(const ShapeDesc& shape);
+
 // The level to draw this frame from each level's error projected to pixels
 // (level 0 first, the full mesh, 0), the level drawn last frame (`previous`;
 // kNoLevel on the first) and the bound in pixels: never a level whose error

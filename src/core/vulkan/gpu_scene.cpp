@@ -9,6 +9,7 @@
 #include "core/scene/frustum.h"
 #include "core/scene/lighting.h"
 #include "core/scene/lod.h"
+#include "core/scene/shape.h"
 #include "core/scene/transform.h"
 #include "core/scene/uv_mapping.h"
 
@@ -82,13 +83,24 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     indices.insert(indices.end(), order.begin(), order.end());
     return range;
   };
-  // A chain's levels index the mesh's own vertices, after its full range.
-  auto appendLevels = [&](const Mesh& mesh, DrawItem& range) {
+  // A loaded mesh's levels index its own vertices, after its full range; a
+  // procedural shape's are whole meshes of their own.
+  auto appendLevels = [&](const Mesh& mesh, const ShapeDesc& shape, DrawItem& range) {
     range.firstLevel = uint32_t(gpuScene.levels.size());
-    for (MeshLevel& level : simplifiedLevels(mesh)) {
-      gpuScene.levels.push_back(
-          {uint32_t(indices.size()), uint32_t(level.indices.size()), level.error});
-      indices.insert(indices.end(), level.indices.begin(), level.indices.end());
+    if (shape.kind == ShapeKind::Custom) {
+      for (MeshLevel& level : simplifiedLevels(mesh)) {
+        gpuScene.levels.push_back({uint32_t(indices.size()), uint32_t(level.indices.size()),
+                                   range.vertexOffset, level.error});
+        indices.insert(indices.end(), level.indices.begin(), level.indices.end());
+      }
+    } else {
+      for (const ShapeLevel& level : tessellationLevels(shape)) {
+        Mesh coarser = buildShape(level.shape);
+        if (!hasTangents(coarser)) computeTangents(coarser);
+        DrawItem part = append(coarser);
+        gpuScene.levels.push_back(
+            {part.firstIndex, part.indexCount, part.vertexOffset, level.error});
+      }
     }
     range.levelCount = uint32_t(gpuScene.levels.size()) - range.firstLevel;
   };
@@ -104,8 +116,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     } else {
       meshRanges.push_back(append(mesh));
     }
-    if (detailChains && m < scene.shapes.size() && scene.shapes[m].kind == ShapeKind::Custom)
-      appendLevels(mesh, meshRanges.back());
+    if (detailChains && m < scene.shapes.size())
+      appendLevels(mesh, scene.shapes[m], meshRanges.back());
   }
   // One projected copy per (mesh, projection) in use.
   std::map<std::pair<uint32_t, UvProjection>, DrawItem> projectedRanges;

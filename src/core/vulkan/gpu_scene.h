@@ -42,11 +42,13 @@ struct DrawItem {
   float objectScale = 1.0f;
 };
 
-// A coarser level of a mesh (core/scene/lod.h, simplifiedLevels): its own
-// index range over the mesh's vertices, and its error in mesh units.
+// A coarser level of a mesh (core/scene/lod.h): a loaded mesh's simplified
+// index range over its own vertices, or a procedural shape rebuilt at a
+// lower tessellation with vertices of its own; its error in mesh units.
 struct DrawLevel {
   uint32_t firstIndex = 0;
   uint32_t indexCount = 0;
+  int32_t vertexOffset = 0;
   float error = 0.0f;
 };
 
@@ -113,7 +115,8 @@ struct GpuScene {
 // Objects whose material asks for a UV projection draw a copy of their mesh
 // with projected UVs; meshes without tangents get computed ones (mesh.h).
 // With `detailChains`, every loaded (custom) mesh also gets its chain of
-// simplified levels, for --lod auto (core/scene/lod.h).
+// simplified levels and every curved procedural shape its chain of
+// tessellations, for --lod auto (core/scene/lod.h).
 GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChains = false);
 
 // The draws of one frame, the one place they are filtered and ordered:
