@@ -49,6 +49,19 @@ layout(location = 1) out vec3 outNormal;    // eye space, not normalised
 #ifdef TEXTURED
 layout(location = 5) out vec4 outTangent;  // eye space xyz, w = handedness
 #endif
+#ifdef SHADOW_COORDINATES
+// Phong with shadows: each shadowed light's shadowMapCoordinates()
+// (shadows.glsl), affine in the position, so they are found here per vertex
+// and interpolated instead of per fragment.
+layout(location = 12) out vec3 outShadowCoordinates0;
+layout(location = 13) out vec3 outShadowCoordinates1;
+layout(location = 14) out vec3 outShadowCoordinates2;
+layout(location = 15) out vec3 outShadowCoordinates3;
+layout(location = 16) out vec3 outShadowCoordinates4;
+layout(location = 17) out vec3 outShadowCoordinates5;
+layout(location = 18) out vec3 outShadowCoordinates6;
+layout(location = 19) out vec3 outShadowCoordinates7;
+#endif
 #endif
 
 void main() {
@@ -88,6 +101,15 @@ void main() {
 #else
   outPosition = eye.xyz;
   outNormal = normal;
+#ifdef SHADOW_COORDINATES
+  // Only the lights with maps: the others are neither written nor read.
+#define SHADOW_COORDINATES_OF(i) \
+  if (castsShadows(i)) outShadowCoordinates##i = shadowMapCoordinates(i, eye.xyz, normal);
+  SHADOW_COORDINATES_OF(0) SHADOW_COORDINATES_OF(1) SHADOW_COORDINATES_OF(2)
+  SHADOW_COORDINATES_OF(3) SHADOW_COORDINATES_OF(4) SHADOW_COORDINATES_OF(5)
+  SHADOW_COORDINATES_OF(6) SHADOW_COORDINATES_OF(7)
+#undef SHADOW_COORDINATES_OF
+#endif
 #ifdef TEXTURED
   // Tangents lie in the surface, so they transform like positions; a
   // mirroring transform flips the frame's handedness.

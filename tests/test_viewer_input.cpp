@@ -198,9 +198,10 @@ TEST(BackgroundTrace, CancelledTraceHandsNothingOver) {
 
 // Every row of the shader table, the ones compiled with defines included.
 TEST(GlslCompiler, RunTimeSpirvEqualsTheBuildsSpirv) {
-  // The forward pass reloads 8 stage variants, plain and textured, and the 6
-  // of flat and Gouraud with shadows, plain and textured.
-  EXPECT_EQ(Renderer::shaderVariants().size(), 28u);
+  // The forward pass reloads 8 stage variants, plain and textured, the 6 of
+  // flat and Gouraud with shadows and the 2 of Phong with shadow coordinates,
+  // plain and textured.
+  EXPECT_EQ(Renderer::shaderVariants().size(), 32u);
   for (const ShaderVariant& variant : shaderTable()) {
     GlslCompileResult result = compileGlsl(SHADELAB_SHADER_SOURCE_DIR, variant);
     ASSERT_TRUE(result.ok()) << result.log;

@@ -30,7 +30,8 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
        VK_SHADER_STAGE_FRAGMENT_BIT},
       {BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT},
-      {BINDING_SHADOWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT},
+      {BINDING_SHADOWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
   };
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.bindingCount = uint32_t(std::size(bindings));
@@ -95,6 +96,9 @@ static const ShaderVariant& forwardStage(VkShaderStageFlagBits stage, ShadingMod
   if (shadows && lightedEarlier &&
       !(model == ShadingModel::Flat && stage == VK_SHADER_STAGE_VERTEX_BIT))
     defines.push_back("SHADOW_VARYINGS");
+  // The others light per fragment: their vertex stage finds the map
+  // coordinates, which are affine in the position (shaders/shadows.glsl).
+  if (shadows && !lightedEarlier) defines.push_back("SHADOW_COORDINATES");
   if (model == ShadingModel::Gouraud) {
     defines.push_back("VERTEX_LIGHTING");
     if (environment) defines.push_back("ENVIRONMENT_VARYINGS");

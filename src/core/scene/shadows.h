@@ -42,7 +42,11 @@ struct ShadowBias {
 inline constexpr float kMaxShadowBias = 64.0f;  // texels: options and scene files accept 0..this
 inline constexpr float kMaxSlopeTangent = 10.0f;
 
-inline constexpr uint32_t kDefaultShadowMapSize = 2048;
+// 1024: against 2048 the lookup's memory traffic on llvmpipe costs ~2.5 ms
+// more per 1280x720 frame on `default`, while the mean FLIP against the
+// traced reference at 640x360 moves by 0.0003 (docs/PERFORMANCE.md,
+// "Shadow lookups"; README.md, "Shadow maps").
+inline constexpr uint32_t kDefaultShadowMapSize = 1024;
 // What the command line and the viewer draw unless told otherwise (the
 // library's FrameSettings default stays Off). Chosen by measurement
 // (README.md, "Shadows"): against the traced reference, whose shadows are

@@ -38,7 +38,8 @@ static_assert(sizeof(gpu::DrawConstants) == 128);
 static_assert(offsetof(gpu::ShadowData, cube) == 16 * MAX_LIGHTS);
 static_assert(offsetof(gpu::ShadowData, bias) == 32 * MAX_LIGHTS);
 static_assert(offsetof(gpu::ShadowData, eyeToLight) == 32 * MAX_LIGHTS + 16);
-static_assert(sizeof(gpu::ShadowData) == 32 * MAX_LIGHTS + 16 + 64 * MAX_LIGHTS);
+static_assert(offsetof(gpu::ShadowData, lookup) == 32 * MAX_LIGHTS + 16 + 64 * MAX_LIGHTS);
+static_assert(sizeof(gpu::ShadowData) == 32 * MAX_LIGHTS + 16 + 80 * MAX_LIGHTS);
 static_assert(sizeof(gpu::SkyParameters) == 96);
 static_assert(offsetof(gpu::SkyParameters, face) == 80);
 static_assert(sizeof(gpu::SkyboxConstants) == 80);
@@ -319,8 +320,22 @@ ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const 
     frame.data.lights[slot] =
         glm::vec4(float(first), shadowView.texelSize, 1.0f / float(mapSize), 0.0f);
     frame.data.cube[slot] = shadowView.cube;
-    if (light.type == LightType::Directional)
-      frame.data.eyeToLight[slot] = shadowView.viewProjection[0] * eyeToWorld;
+    if (light.type == LightType::Directional) {
+      glm::mat4 eyeToLight = shadowView.viewProjection[0] * eyeToWorld;
+      frame.data.eyeToLight[slot] = eyeToLight;
+      // Moving a point one texel towards the light changes only its depth
+      // in the light's orthographic view (the view looks along the light).
+      glm::vec3 towardsLight = glm::normalize(-glm::mat3(view) * light.direction);
+      float depthPerTexel = (eyeToLight * glm::vec4(towardsLight, 0.0f)).z * shadowView.texelSize;
+      frame.data.lookup[slot] =
+          glm::vec4(depthPerTexel * bias.constant, depthPerTexel * bias.slope, 0.0f, 0.0f);
+    } else {
+      // A texel at distance d is texelSize * d: moving t texels towards the
+      // light scales the vector from it by 1 - texelSize * t.
+      frame.data.lookup[slot] =
+          glm::vec4(1.0f - shadowView.texelSize * bias.constant, shadowView.texelSize * bias.slope,
+                    0.5f * shadowView.cube.z, 0.0f);
+    }
     for (size_t face = 0; face < shadowView.viewProjection.size(); ++face)
       frame.worldToLightClip[size_t(first) + face] = shadowView.viewProjection[face];
   }
