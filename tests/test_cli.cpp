@@ -563,10 +563,11 @@ TEST_F(Cli, BenchWritesOneCsvRowPerSetting) {
 }
 
 // A bench killed while it measures leaves nothing: its folder is made only
-// with the results. (--frames 2000 keeps it measuring well past the kill.)
+// with the results. (--frames 100000 keeps it measuring well past the kill:
+// 2000 frames of 32x18 took ~2 s once steady frames stopped flushing.)
 TEST_F(Cli, KilledBenchLeavesNoFolder) {
   CommandResult r = run("bench -o " + out("b") +
-                        " --size 32x18 --frames 2000 --modes unlit --tess 1 --msaa 1 "
+                        " --size 32x18 --frames 100000 --modes unlit --tess 1 --msaa 1 "
                         "--reference raster & pid=$!; sleep 2; kill -TERM $pid; wait $pid");
   EXPECT_EQ(r.exitCode, 128 + 15) << r.output;  // ended by SIGTERM, as the shell reports it
   EXPECT_FALSE(fs::exists(out("b")));
