@@ -538,10 +538,14 @@ void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& 
   for (const Object& object : source.objects) transforms.push_back(object.transform);
   // Casters at the level the view draws them (objects out of view: their
   // last one), so a simplified surface is not shadowed by its full self.
-  std::vector<DrawItem> casters = scene.draws;
-  if (settings_.lod)
-    for (DrawItem& draw : casters)
+  std::span<const DrawItem> casters = scene.draws;
+  std::vector<DrawItem> levelled;  // a copy only when levels may differ
+  if (settings_.lod) {
+    levelled = scene.draws;
+    for (DrawItem& draw : levelled)
       applyLevel(scene, draw, drawnLevels_[uint32_t(draw.constants.object.x)]);
+    casters = levelled;
+  }
   stats.shadowDraws =
       shadow_.record(cmd, scene, casters, uploadCount_, transforms, shadows.worldToLightClip,
                      textures_.materialSets(settings_.textures.filterOverride),
