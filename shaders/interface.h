@@ -129,11 +129,11 @@ struct ShadowData {
   vec4 bias;  // ShadowBias in texels: x = constant, y = slope, z = normal offset
   // Directional lights: eye space to the map's clip space (xy -1..1, depth 0..1).
   mat4 eyeToLight[MAX_LIGHTS];
-  // The fragment stage's numbers per light, premultiplied on the host
-  // (shadows.glsl, shadowLookup): moving towards the light by bias.x + bias.y
-  // tan(theta) texels is, for a directional light, map depth + x + y tan;
-  // for a point light, the vector from the light scaled by x - y tan; z =
-  // half the cube faces' cot(half angle) (ShadowData::cube.z / 2).
+  // The bias towards the light per light, premultiplied on the host
+  // (shadows.glsl, shadowMapCoordinates): moving towards the light by
+  // bias.x + bias.y tan(theta) texels is, for a directional light, map
+  // depth + x + y tan; for a point light, the vector from the light scaled
+  // by x - y tan. zw unused.
   vec4 lookup[MAX_LIGHTS];
 };
 

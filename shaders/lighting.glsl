@@ -84,14 +84,14 @@ vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn
     }
     vec3 L = toLight * inverseD;
     vec3 term = lightTerm(N, V, L, attenuation, light.intensity.rgb, material, blinn);
-    if (shadowsLookedUp) term *= shadowCoefficient(i, position, N, L);
+    if (shadowsLookedUp) term *= shadowCoefficient(i, position, N);
     color += term;
   }
   for (int i = pointLightCount; i < pointLightCount + directionalLightCount; ++i) {
     GpuLight light = frame.lights[i];
     // Unit length already (or zero), normalised once on the host.
     vec3 term = lightTerm(N, V, light.position.xyz, 1.0, light.intensity.rgb, material, blinn);
-    if (shadowsLookedUp) term *= shadowCoefficient(i, position, N, light.position.xyz);
+    if (shadowsLookedUp) term *= shadowCoefficient(i, position, N);
     color += term;
   }
   return color;
@@ -130,14 +130,9 @@ void illuminateEach(vec3 position, vec3 normal, SurfaceMaterial material, bool b
 // fragment's eye-space position, with `normal` (Gouraud's interpolated one,
 // flat's face normal) for the bias; then sum_i k[i] terms[i].
 void shadowCoefficients(vec3 position, vec3 normal, out float k[MAX_LIGHTS]) {
-  float lengthN2 = dot(normal, normal);
-  vec3 N = lengthN2 > 1e-40 && lengthN2 < 1e30 ? normal * inversesqrt(lengthN2) : vec3(0.0);
   for (int i = 0; i < MAX_LIGHTS; ++i) k[i] = 1.0;
-  for (int i = 0; i < pointLightCount + directionalLightCount; ++i) {
-    vec3 L = i < pointLightCount ? safeNormalize(frame.lights[i].position.xyz - position)
-                                 : frame.lights[i].position.xyz;
-    k[i] = shadowCoefficient(i, position, N, L);
-  }
+  for (int i = 0; i < pointLightCount + directionalLightCount; ++i)
+    k[i] = shadowCoefficient(i, position, normal);
 }
 
 vec3 shadowedSum(float k[MAX_LIGHTS], vec3 terms[MAX_LIGHTS]) {

@@ -334,7 +334,7 @@ ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const 
       // light scales the vector from it by 1 - texelSize * t.
       frame.data.lookup[slot] =
           glm::vec4(1.0f - shadowView.texelSize * bias.constant, shadowView.texelSize * bias.slope,
-                    0.5f * shadowView.cube.z, 0.0f);
+                    0.0f, 0.0f);
     }
     for (size_t face = 0; face < shadowView.viewProjection.size(); ++face)
       frame.worldToLightClip[size_t(first) + face] = shadowView.viewProjection[face];
