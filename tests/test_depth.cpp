@@ -118,6 +118,7 @@ TEST_F(DepthPrecision, EveryDepthModeDrawsTheDefaultSceneAlike) {
 TEST_F(DepthPrecision, ComparisonRejectsZFighting) {
   Scene scene = zfightScene(Projection::Perspective, 0.1f);
   RenderSettings settings{kWidth, kHeight, ShadingModel::Unlit};
+  settings.frontToBack = false;  // the farther plane first: sorted, ties would go to the nearer
   settings.depth = DepthMode::ReversedZ;
   ImageU8 correct = render(scene, settings);
   settings.depth = DepthMode::D16;

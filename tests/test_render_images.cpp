@@ -4,10 +4,13 @@
 // on the readback.
 #include <cmath>
 #include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+#include <vector>
 
 #include "core/base/errors.h"
 #include "core/scene/scene.h"
 #include "core/scene/transform.h"
+#include "core/vulkan/gpu_scene.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {
@@ -146,6 +149,41 @@ Scene singleSphere(glm::vec3 eye) {
   scene.objects.push_back(
       {"sphere", scene.addMesh(makeUvSphere(1.0f, 32, 16)), glm::mat4(1.0f), Material{}});
   return scene;
+}
+
+// visibleDraws' order: the opaque draws front to back (early depth testing
+// then skips what they hide), the transparent ones back to front after
+// them, what lies behind the eye culled. The old order (opaque in scene
+// order) gives 0, 1, 4 first and fails.
+TEST(DrawOrder, OpaqueFrontToBackThenTransparentBackToFront) {
+  GpuScene scene;
+  auto add = [&](float z, bool transparent, uint32_t id) {
+    DrawItem draw;
+    draw.worldBounds = {{-0.5f, -0.5f, z - 0.5f}, {0.5f, 0.5f, z + 0.5f}};
+    draw.transparent = transparent;
+    draw.material = id;  // names the draw here
+    scene.draws.push_back(draw);
+  };
+  add(-10.0f, false, 0);
+  add(-3.0f, false, 1);
+  add(-6.0f, true, 2);
+  add(-20.0f, true, 3);
+  add(-5.0f, false, 4);
+  add(5.0f, false, 5);  // behind the eye
+  // The eye at the origin looking down -z.
+  glm::mat4 projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
+  uint32_t culled = 0;
+  auto order = [&](bool frontToBack) {
+    std::vector<uint32_t> ids;
+    for (const DrawItem& draw :
+         visibleDraws(scene, glm::mat4(1.0f), projection, true, frontToBack, culled))
+      ids.push_back(draw.material);
+    return ids;
+  };
+  EXPECT_EQ(order(true), (std::vector<uint32_t>{1, 4, 0, 3, 2}));
+  EXPECT_EQ(culled, 1u);
+  // Without frontToBack (study zfight) the opaque ones keep scene order.
+  EXPECT_EQ(order(false), (std::vector<uint32_t>{0, 1, 4, 3, 2}));
 }
 
 // Counter-clockwise front faces with back-face culling: from inside a closed

@@ -50,6 +50,7 @@ ZFightMeasurement measureZFight(Renderer& renderer, DepthMode depth, Projection 
   std::reverse(farLast.objects.begin(), farLast.objects.end());
   RenderSettings settings{width, height, ShadingModel::Unlit};
   settings.depth = depth;
+  settings.frontToBack = false;  // each order as given: sorted, the near plane would come first
   ImageRgba a = renderer.renderToImage(farFirst, settings).image;
   ImageRgba b = renderer.renderToImage(farLast, settings).image;
   ZFightMeasurement result{depth, projection, near, distanceScale};

@@ -395,8 +395,8 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   gpu::FrameData frameData = makeFrameData(source, view, projection);
   std::memcpy(frame.frameData.mapped(), &frameData, sizeof(frameData));
   std::vector<gpu::ObjectData> objects = makeObjectData(source, view, settings.normalTransform);
-  std::vector<DrawItem> draws =
-      visibleDraws(scene, view, projection, settings.frustumCulling, stats.culledDraws);
+  std::vector<DrawItem> draws = visibleDraws(scene, view, projection, settings.frustumCulling,
+                                             settings.frontToBack, stats.culledDraws);
   stats.coarserDraws = 0;
   if (settings.lod) chooseLevels(scene, source, draws, stats);
   stats.drawCalls = uint32_t(draws.size());

@@ -73,6 +73,11 @@ struct FrameSettings {
   // (depth clamp); off clips them as any other pass would. Only study
   // shadow-near turns it off, to measure what the clamp saves.
   bool shadowDepthClamp = true;
+  // Opaque draws front to back (visibleDraws), so early depth testing skips
+  // the fragments they hide; off keeps the scene's order. Only the z-fight
+  // measurement turns it off: it draws its two planes in both orders, and
+  // sorted the nearer one would always come first.
+  bool frontToBack = true;
   // Materials compiled into the forward pipelines, a pipeline per material,
   // when the scene has at most kMaxMaterialPipelines (ForwardFrame says why);
   // off reads them from push constants. A few linear values may differ by

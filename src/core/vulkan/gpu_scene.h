@@ -121,11 +121,13 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
 
 // The draws of one frame, the one place they are filtered and ordered:
 // draws whose box is outside the view frustum are dropped (counted in
-// `culled`), then the opaque ones in scene order, then the transparent ones
-// back to front by the eye-space depth of their box's centre (the painter's
-// algorithm; blending is not commutative).
+// `culled`), then the opaque ones front to back (fewer hidden fragments
+// shaded; in scene order without `frontToBack`), then the transparent ones back to front (the
+// painter's algorithm; blending is not commutative), both by the eye-space depth of their box's
+// centre.
 std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
-                                   const glm::mat4& projection, bool cull, uint32_t& culled);
+                                   const glm::mat4& projection, bool cull, bool frontToBack,
+                                   uint32_t& culled);
 
 // Lights move to eye space, so the shaders light with V = -position; the
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.
