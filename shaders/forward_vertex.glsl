@@ -53,14 +53,7 @@ layout(location = 5) out vec4 outTangent;  // eye space xyz, w = handedness
 // Phong with shadows: each shadowed light's shadowMapCoordinates()
 // (shadows.glsl; the biases included), found here per vertex and
 // interpolated instead of per fragment.
-layout(location = 12) out vec4 outShadowCoordinates0;
-layout(location = 13) out vec4 outShadowCoordinates1;
-layout(location = 14) out vec4 outShadowCoordinates2;
-layout(location = 15) out vec4 outShadowCoordinates3;
-layout(location = 16) out vec4 outShadowCoordinates4;
-layout(location = 17) out vec4 outShadowCoordinates5;
-layout(location = 18) out vec4 outShadowCoordinates6;
-layout(location = 19) out vec4 outShadowCoordinates7;
+SHADOW_COORDINATE_VARYINGS(out, outShadowCoordinates)
 #endif
 #endif
 

@@ -21,6 +21,19 @@
 #include "common.glsl"
 
 layout(constant_id = SPEC_SHADOW_FILTER) const int shadowFilter = SHADOW_OFF;
+
+// Phong's shadow coordinates travel from its vertex stage to its fragment
+// stage (SHADOW_COORDINATES) as one vec4 per light slot, locations 12..19,
+// one variable each so that only the lights with maps are interpolated.
+// Both sides declare them from here: (out, outShadowCoordinates) and (in,
+// inShadowCoordinates).
+#define SHADOW_COORDINATE_VARYING(direction, name, i) \
+  layout(location = 12 + i) direction vec4 name##i;
+#define SHADOW_COORDINATE_VARYINGS(direction, name)                                            \
+  SHADOW_COORDINATE_VARYING(direction, name, 0) SHADOW_COORDINATE_VARYING(direction, name, 1) \
+  SHADOW_COORDINATE_VARYING(direction, name, 2) SHADOW_COORDINATE_VARYING(direction, name, 3) \
+  SHADOW_COORDINATE_VARYING(direction, name, 4) SHADOW_COORDINATE_VARYING(direction, name, 5) \
+  SHADOW_COORDINATE_VARYING(direction, name, 6) SHADOW_COORDINATE_VARYING(direction, name, 7)
 layout(constant_id = SPEC_SHADOWED_LIGHTS) const int shadowedLights = 0xff;
 
 #if defined(SHADOW_LOOKUP) || defined(SHADOW_COORDINATES)
@@ -132,16 +145,8 @@ float shadowLookup(int i, vec4 coordinates) {
 
 #ifdef SHADOW_COORDINATES
 // Phong and Blinn-Phong: shadowMapCoordinates() of each shadowed light,
-// from the vertex stage (forward_vertex.glsl), one input per light so that
-// only the lights with maps are interpolated.
-layout(location = 12) in vec4 inShadowCoordinates0;
-layout(location = 13) in vec4 inShadowCoordinates1;
-layout(location = 14) in vec4 inShadowCoordinates2;
-layout(location = 15) in vec4 inShadowCoordinates3;
-layout(location = 16) in vec4 inShadowCoordinates4;
-layout(location = 17) in vec4 inShadowCoordinates5;
-layout(location = 18) in vec4 inShadowCoordinates6;
-layout(location = 19) in vec4 inShadowCoordinates7;
+// from the vertex stage (forward_vertex.glsl).
+SHADOW_COORDINATE_VARYINGS(in, inShadowCoordinates)
 vec4 shadowCoordinatesAt(int i, vec3 position, vec3 normal) {
   // i is a constant once the light loops unroll: this folds to one input.
   return i == 0 ? inShadowCoordinates0 : i == 1 ? inShadowCoordinates1 :
