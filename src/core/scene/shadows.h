@@ -43,11 +43,12 @@ inline constexpr float kMaxShadowBias = 64.0f;  // texels: options and scene fil
 inline constexpr float kMaxSlopeTangent = 10.0f;
 
 // 768, chosen by measurement: the lookup's memory traffic grows with the
-// map on llvmpipe, and on `default` at 1280x720 hard 768 costs 1.42-1.48x
-// the frame without shadows where 1024 cost 1.49-1.53x (issue 15's budget
-// is 1.5x), while the mean FLIP against the traced reference at 640x360 is
-// within 0.0001 of 1024's and 0.0004 of 2048's (docs/PERFORMANCE.md,
-// "Shadow lookups"; README.md, "Shadow maps").
+// map on llvmpipe, and on `default` at 1280x720 hard 768 costs 1.39-1.44x
+// the frame without shadows (median of 5 runs 1.43x) where 1024 cost
+// 1.37-1.53x (median 1.49x; issue 15's budget is 1.5x), while the mean
+// FLIP against the traced reference at 640x360 is within 0.0001 of 1024's
+// and 0.0004 of 2048's (docs/PERFORMANCE.md, "Shadow lookups"; README.md,
+// "Shadow maps").
 inline constexpr uint32_t kDefaultShadowMapSize = 768;
 // What the command line and the viewer draw unless told otherwise (the
 // library's FrameSettings default stays Off). Chosen by measurement
