@@ -863,7 +863,7 @@ const std::vector<BadCase>& badCases() {
       {Group::Outputs,
        "turntable GIF on a full disk",
        {},
-       "render -o {dir}/s.png --turntable 12 --gif --size 160x90",
+       "render -o {dir}/s.png --turntable 12 --gif --size 128x72",  // frames < 8 KiB
        2,
        kError + "cannot write '{dir}/s.gif': the encoded GIF",
        kSmallDisk},

@@ -5,8 +5,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/packing.hpp>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "core/base/stats.h"
 #include "core/metrics/metrics.h"
@@ -277,6 +279,34 @@ TEST(Srgb, EncodeRoundsAndClamps) {
   linear.set(0, 0, {0.5f, -1.0f, 7.0f, 0.5f});
   ImageU8 encoded = encodeSrgb8(linear);
   EXPECT_EQ(encoded.at(0, 0), glm::u8vec4(188, 0, 255, 128));  // 0.735357 * 255 = 187.5 -> 188
+}
+
+// Every half float, as each of the four channels: the half path gives the
+// codes the float path gives (the render command writes PNGs through it).
+TEST(Srgb, HalfEncodingEqualsTheFloatEncodingForEveryHalf) {
+  const uint32_t width = 256, height = 256;  // 65,536 pixels, one half each
+  std::vector<uint16_t> halves(size_t(width) * height * 4);
+  ImageRgba floats(width, height);
+  for (uint32_t bits = 0; bits < 65536; ++bits) {
+    // Channel c of pixel p holds half (bits + c * 16,411) mod 2^16: every
+    // channel meets every half once.
+    for (uint32_t channel = 0; channel < 4; ++channel) {
+      uint16_t half = uint16_t(bits + channel * 16411u);
+      halves[size_t(bits) * 4 + channel] = half;
+      floats.pixels[size_t(bits) * 4 + channel] = glm::unpackHalf1x16(half);
+    }
+  }
+  ImageU8 fromHalves = encodeSrgb8FromHalf(halves.data(), width, height);
+  ImageU8 fromFloats = encodeSrgb8(floats);
+  size_t mismatches = 0;
+  for (size_t i = 0; i < fromFloats.pixels.size(); ++i)
+    if (fromHalves.pixels[i] != fromFloats.pixels[i] && ++mismatches <= 5)
+      ADD_FAILURE() << "half " << halves[i] << " channel " << i % 4 << ": "
+                    << int(fromHalves.pixels[i]) << " against " << int(fromFloats.pixels[i]);
+  EXPECT_EQ(mismatches, 0u);
+  // A wrong image is caught: one code off in one pixel.
+  ++fromHalves.pixels[4 * 1234 + 1];
+  EXPECT_NE(fromHalves.pixels, fromFloats.pixels);
 }
 
 TEST(Stats, PercentilesInterpolateBetweenRanks) {

@@ -270,8 +270,11 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.shadowMapSize = options.quality ? point.shadowMapSize : look.shadowMapSize;
     settings.shadowBias = look.shadowBias;
     settings.keepShadowMaps = look.keepShadowMaps;
-    settings.materialConstants = look.materialConstants;
+    settings.materialConstants =
+        look.materialConstants && (options.look.materialConstants != "auto" ||
+                                   settings.frames > 1 || !cameras.empty());
     settings.lod = look.lod;
+    settings.srgb8 = !isLinearOutput(options.output);
     settings.lodErrorPixels = look.lodErrorPixels;
     if (!cameras.empty())
       written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
@@ -281,7 +284,10 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   // After the renderer is gone: finishWithValidation shuts the device down.
   if (!cameras.empty())
     return reportSequence(options, scene, settings, point, written, result.stats, global, *context);
-  writeImage(result.image, options.output);
+  if (settings.srgb8)
+    writeImage(result.srgb8, options.output);
+  else
+    writeImage(result.image, options.output);
   std::string levels = settings.lod ? ", " + std::to_string(result.stats.coarserDraws) +
                                           " at a coarser level of detail"
                                     : "";

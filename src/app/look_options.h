@@ -30,7 +30,11 @@ struct LookOptions {
   std::string filter;  // empty: each material's own sampler
   std::string bump = "on";
   bool mipTint = false;
-  std::string materialConstants = "on";  // --material-constants
+  // --material-constants: on, off or auto, which applyLookOptions takes as on
+  // and a command that draws one frame only as off (`render`: its images are
+  // the same either way, and compiling a pipeline per material costs more
+  // start-up than the one frame saves).
+  std::string materialConstants = "auto";
   ShadowOptions shadows;                 // --shadows, --shadow-size, the bias options
   std::string lod = "off";               // --lod auto|off (view sets "auto" before adding)
   float lodError = 0.5f;                 // --lod-error, pixels

@@ -634,7 +634,11 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     submitFrame();
   }
   finishFrames(result.stats);
-  result.image = unpackHalfImage(readback.mapped(), settings.width, settings.height);
+  if (settings.srgb8)
+    result.srgb8 = encodeSrgb8FromHalf(static_cast<const uint16_t*>(readback.mapped()),
+                                       settings.width, settings.height);
+  else
+    result.image = unpackHalfImage(readback.mapped(), settings.width, settings.height);
   return result;
 }
 

@@ -95,6 +95,10 @@ struct FrameSettings {
 // renderToImage: one scene, uploaded once, drawn `frames` times.
 struct RenderSettings : FrameSettings {
   uint32_t frames = 1;  // frames drawn back to back; the last one is read back
+  // Read back as 8-bit sRGB into RenderResult::srgb8 (the codes encodeSrgb8
+  // gives) instead of linear floats into RenderResult::image: a PNG's
+  // pixels without the 4-bytes-a-channel image in between.
+  bool srgb8 = false;
 };
 
 struct RenderStats {
@@ -117,7 +121,8 @@ struct RenderStats {
 };
 
 struct RenderResult {
-  ImageRgba image;  // linear RGBA
+  ImageRgba image;  // linear RGBA, unless RenderSettings::srgb8
+  ImageU8 srgb8;    // with RenderSettings::srgb8
   RenderStats stats;
 };
 

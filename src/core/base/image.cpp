@@ -9,6 +9,9 @@
 #include <limits>
 #include <memory>
 #include <system_error>
+#include <vector>
+
+#include <glm/gtc/packing.hpp>
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -136,11 +139,43 @@ ImageU8 encodeSrgb8(const ImageRgba& image) {
   return result;
 }
 
-bool isSupportedOutput(const fs::path& path) {
+ImageU8 encodeSrgb8FromHalf(const uint16_t* rgba, uint32_t width, uint32_t height) {
+  struct Tables {
+    std::vector<uint8_t> colour, alpha;
+    Tables() : colour(65536), alpha(65536) {
+      for (uint32_t bits = 0; bits < 65536; ++bits) {
+        float value = glm::unpackHalf1x16(uint16_t(bits));
+        colour[bits] = linearToSrgb8(value);
+        alpha[bits] = quantize(value);
+      }
+    }
+  };
+  static const Tables tables;  // 65,536 table look-ups each, under a millisecond, once
+  ImageU8 result(width, height);
+  for (size_t i = 0; i < result.pixels.size(); i += 4) {
+    result.pixels[i] = tables.colour[rgba[i]];
+    result.pixels[i + 1] = tables.colour[rgba[i + 1]];
+    result.pixels[i + 2] = tables.colour[rgba[i + 2]];
+    result.pixels[i + 3] = tables.alpha[rgba[i + 3]];
+  }
+  return result;
+}
+
+namespace {
+
+std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  return ext == ".png" || ext == ".exr";
+  return ext;
 }
+
+}  // namespace
+
+bool isSupportedOutput(const fs::path& path) {
+  return lowerExtension(path) == ".png" || isLinearOutput(path);
+}
+
+bool isLinearOutput(const fs::path& path) { return lowerExtension(path) == ".exr"; }
 
 void checkOutputPath(const fs::path& path) {
   if (path.empty()) throw InputError("output path is empty");
@@ -150,9 +185,7 @@ void checkOutputPath(const fs::path& path) {
   checkWritableFolder(path);
   // EXR needs the OpenImageIO module: load it now, so a missing one fails
   // before the work rather than after it.
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  if (ext == ".exr") oiio::oiioModule("write '" + path.string() + "'");
+  if (isLinearOutput(path)) oiio::oiioModule("write '" + path.string() + "'");
 }
 
 namespace {
@@ -175,9 +208,7 @@ void encodeWithModule(const fs::path& path, int width, int height, oiio::PixelTy
 
 void writeImage(const ImageU8& image, const fs::path& path) {
   checkOutputPath(path);
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  if (ext == ".exr") {  // 8-bit values as they are, as OpenImageIO converts them
+  if (isLinearOutput(path)) {  // 8-bit values as they are, as OpenImageIO converts them
     encodeWithModule(path, int(image.width), int(image.height), oiio::PixelType::UInt8,
                      oiio::PixelType::UInt8, image.pixels.data(), {{"oiio:ColorSpace", "sRGB"}});
     return;
@@ -188,9 +219,7 @@ void writeImage(const ImageU8& image, const fs::path& path) {
 
 void writeImage(const ImageRgba& image, const fs::path& path) {
   checkOutputPath(path);
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  if (ext != ".exr") return writeImage(encodeSrgb8(image), path);
+  if (!isLinearOutput(path)) return writeImage(encodeSrgb8(image), path);
   // Stored as half, like the render target. OpenImageIO stamps the current
   // time as the EXR capDate unless DateTime is given: a fixed (empty) one
   // keeps the file byte-identical run to run.

@@ -44,9 +44,15 @@ float srgbToLinear(float encoded);
 uint8_t linearToSrgb8(float linear);
 // linearToSrgb8 per colour channel; alpha is stored linearly.
 ImageU8 encodeSrgb8(const ImageRgba& image);
+// encodeSrgb8 of RGBA half floats (IEEE binary16, 4 per pixel, rows packed):
+// the same codes as encodeSrgb8 of the floats they hold, through two tables
+// of all 65,536 halves, without the float image in between.
+ImageU8 encodeSrgb8FromHalf(const uint16_t* rgba, uint32_t width, uint32_t height);
 
 // Output formats by extension: .png (8-bit sRGB) or .exr (16-bit float, linear).
 bool isSupportedOutput(const std::filesystem::path& path);
+// Whether `path` names a linear (.exr, any case) rather than an 8-bit output.
+bool isLinearOutput(const std::filesystem::path& path);
 // Throws InputError unless `path` can be written: supported extension,
 // existing parent folder. Call before rendering so bad paths fail fast.
 void checkOutputPath(const std::filesystem::path& path);

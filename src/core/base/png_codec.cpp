@@ -129,14 +129,17 @@ bool encode(png_structp png, png_infop info, uint32_t width, uint32_t height,
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
   png_set_oFFs(png, info, 0, 0, PNG_OFFSET_PIXEL);
   png_set_text(png, info, text, 1);
-  // zlib level 6 with the default strategy (OpenImageIO's), and every row
-  // through the Sub filter. libpng's default tries all five filters on every
-  // row: on the default scene at 1280x720 that took 3.5x as long (about 50
-  // ms of the first PNG) for a file 7% larger. Over the 76 images of
-  // scripts/output_md5s.sh Sub writes 1% fewer bytes in all in two thirds of
-  // the time; files grow up to 46% on bump-mapped noise and constant colour
-  // (docs/PERFORMANCE.md).
-  png_set_compression_level(png, 6);
+  // zlib level 1 with the default strategy, and every row through the Sub
+  // filter. libpng's default tries all five filters on every row: on the
+  // default scene at 1280x720 that took 3.5x as long for a file 7% larger;
+  // over the 76 images of scripts/output_md5s.sh Sub writes 1% fewer bytes
+  // in all in two thirds of the time (files grow up to 46% on bump-mapped
+  // noise and constant colour). Level 1 rather than OpenImageIO's 6: the
+  // default scene's image deflates in 9 ms instead of 31 (187 KB against
+  // 111 KB); the 79 PNGs of docs/images and tests/golden in 157 ms instead
+  // of 559 (3.71 MB against 2.69 MB). About 20 ms of the first PNG's ~230
+  // (docs/PERFORMANCE.md, "Start-up").
+  png_set_compression_level(png, 1);
   png_set_compression_strategy(png, Z_DEFAULT_STRATEGY);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_write_info(png, info);
