@@ -271,8 +271,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.shadowBias = look.shadowBias;
     settings.keepShadowMaps = look.keepShadowMaps;
     settings.materialConstants =
-        look.materialConstants && (options.look.materialConstants != "auto" ||
-                                   settings.frames > 1 || !cameras.empty());
+        look.materialConstants &&
+        (options.look.materialConstants != "auto" || settings.frames > 1 || !cameras.empty());
     settings.lod = look.lod;
     settings.srgb8 = !isLinearOutput(options.output);
     settings.lodErrorPixels = look.lodErrorPixels;

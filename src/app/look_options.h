@@ -35,9 +35,9 @@ struct LookOptions {
   // the same either way, and compiling a pipeline per material costs more
   // start-up than the one frame saves).
   std::string materialConstants = "auto";
-  ShadowOptions shadows;                 // --shadows, --shadow-size, the bias options
-  std::string lod = "off";               // --lod auto|off (view sets "auto" before adding)
-  float lodError = 0.5f;                 // --lod-error, pixels
+  ShadowOptions shadows;    // --shadows, --shadow-size, the bias options
+  std::string lod = "off";  // --lod auto|off (view sets "auto" before adding)
+  float lodError = 0.5f;    // --lod-error, pixels
 };
 
 void addLookOptions(CLI::App* command, LookOptions& options);

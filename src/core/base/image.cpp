@@ -6,12 +6,11 @@
 #include <bit>
 #include <cassert>
 #include <cmath>
+#include <glm/gtc/packing.hpp>
 #include <limits>
 #include <memory>
 #include <system_error>
 #include <vector>
-
-#include <glm/gtc/packing.hpp>
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -175,7 +174,9 @@ bool isSupportedOutput(const fs::path& path) {
   return lowerExtension(path) == ".png" || isLinearOutput(path);
 }
 
-bool isLinearOutput(const fs::path& path) { return lowerExtension(path) == ".exr"; }
+bool isLinearOutput(const fs::path& path) {
+  return lowerExtension(path) == ".exr";
+}
 
 void checkOutputPath(const fs::path& path) {
   if (path.empty()) throw InputError("output path is empty");
