@@ -31,9 +31,9 @@ struct LookOptions {
   std::string bump = "on";
   bool mipTint = false;
   // --material-constants: on, off or auto, which applyLookOptions takes as on
-  // and a command that draws one frame only as off (`render`: its images are
-  // the same either way, and compiling a pipeline per material costs more
-  // start-up than the one frame saves).
+  // and a command that draws one frame only as off (`render`: its 8-bit
+  // images are the same either way, linear ones within a half-float step,
+  // and a pipeline per material costs more start-up than one frame saves).
   std::string materialConstants = "auto";
   ShadowOptions shadows;    // --shadows, --shadow-size, the bias options
   std::string lod = "off";  // --lod auto|off (view sets "auto" before adding)
