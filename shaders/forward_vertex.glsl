@@ -58,7 +58,9 @@ SHADOW_COORDINATE_VARYINGS(out, outShadowCoordinates)
 #endif
 
 void main() {
-  ObjectData object = objects[draw.object.x];
+  // An instanced draw's copies have consecutive ObjectData (batchInstances,
+  // core/vulkan/gpu_scene.h); any other draw is one instance, index 0.
+  ObjectData object = objects[draw.object.x + gl_InstanceIndex];
   vec4 eye = object.modelView * vec4(inPosition, 1.0);
   // Normals transform by the inverse transpose of the model-view matrix.
   vec3 normal = mat3(object.normalMatrix) * inNormal;

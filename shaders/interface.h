@@ -48,6 +48,9 @@ using mat4 = glm::mat4;
 // one is 32 bytes per frame in flight; a million is ~1 s per frame on lavapipe.
 #define MAX_INSTANCES_PER_OBJECT 262144
 #define MAX_INSTANCES_PER_SCENE 1048576
+// Copies of meshes a scene may have in all: each is an object of its own on
+// the host (culled, levelled, 128 bytes of ObjectData per frame in flight).
+#define MAX_MESH_INSTANCES_PER_SCENE 65536
 
 // Specialization constant ids and the values of SHADING_MODEL. The number of
 // point and of directional lights are constants too: with them each kind of

@@ -276,6 +276,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.lod = look.lod;
     settings.srgb8 = !isLinearOutput(options.output);
     settings.lodErrorPixels = look.lodErrorPixels;
+    settings.instancing = look.instancing;
     if (!cameras.empty())
       written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
     else

@@ -93,6 +93,12 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
                    "Screen-space error bound of --lod auto, in pixels")
       ->capture_default_str()
       ->check(CLI::Range(0.01f, 100.0f));
+  command
+      ->add_option("--instancing", options.instancing,
+                   "The visible copies of an \"instances\" block drawn as one instanced draw per "
+                   "level of detail (on), or one draw each (off: the same image)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
@@ -105,6 +111,7 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
   options.shadows.apply(settings);
   settings.lod = options.lod == "auto";
   settings.lodErrorPixels = options.lodError;
+  settings.instancing = options.instancing == "on";
 }
 
 float parseTessellationFactor(const std::string& text) {

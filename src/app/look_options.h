@@ -38,6 +38,7 @@ struct LookOptions {
   ShadowOptions shadows;    // --shadows, --shadow-size, the bias options
   std::string lod = "off";  // --lod auto|off (view sets "auto" before adding)
   float lodError = 0.5f;    // --lod-error, pixels
+  std::string instancing = "on";  // --instancing on|off
 };
 
 void addLookOptions(CLI::App* command, LookOptions& options);

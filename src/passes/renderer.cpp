@@ -386,7 +386,6 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   assert(settingsApplied_ && "applyFrameSettings() after upload(), before recording");
   const FrameSettings& settings = settings_;
   Frame& frame = frames_[frameIndex_ % kFramesInFlight];
-  ensureObjectCapacity(frame, uint32_t(source.objects.size()));
   uint32_t width = settings.width, height = settings.height;
   glm::mat4 view = source.camera.viewMatrix();
   float viewAspect =
@@ -399,9 +398,12 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
                                              settings.frontToBack, stats.culledDraws);
   stats.coarserDraws = 0;
   if (settings.lod) chooseLevels(scene, source, draws, stats);
+  if (settings.instancing) batchInstances(draws, objects);
+  ensureObjectCapacity(frame, uint32_t(objects.size()));
   stats.drawCalls = uint32_t(draws.size());
   stats.triangles = 0;
-  for (const DrawItem& draw : draws) stats.triangles += draw.indexCount / 3;
+  for (const DrawItem& draw : draws)
+    stats.triangles += uint64_t(draw.indexCount / 3) * draw.instanceCount;
   // A scene without objects has no data (objects.data() may be null, which
   // memcpy forbids even for zero bytes: UBSan reported it).
   if (!objects.empty())

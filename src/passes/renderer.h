@@ -90,6 +90,10 @@ struct FrameSettings {
   // the level the view drew it.
   bool lod = false;
   float lodErrorPixels = 0.5f;
+  // The visible copies of an "instances" block drawn as one instanced draw
+  // per level (batchInstances); off draws them one by one, to show the
+  // image is the same.
+  bool instancing = true;
 };
 
 // renderToImage: one scene, uploaded once, drawn `frames` times.

@@ -163,6 +163,12 @@ struct Object {
   Material material;
   bool castsShadows = true;     // drawn into the shadow maps
   bool receivesShadows = true;  // its lighting looks the shadow maps up
+  // The copies one "instances" block makes are objects of their own (the
+  // tracer, culling, levels of detail and shadows see each), with the index
+  // of the first copy here: the renderer draws the visible copies of a group
+  // at one level as one instanced draw. kNotInstanced: an object alone.
+  uint32_t instanceGroup = kNotInstanced;
+  static constexpr uint32_t kNotInstanced = ~0u;
 };
 
 // A billboard: a textured quad that turns towards the viewer, drawn by the

@@ -101,15 +101,17 @@
 //               x (1 - transparency), sorted back to front with the transparent objects);
 //               "receives_shadows" (default true; billboards never cast); "instances" (below).
 //               A billboard takes only position and width/height scale from its transform.
-//   "instances" on a billboard: copies drawn in one instanced draw, each culled on its own;
+//   "instances" on a billboard or a mesh shape: copies drawn in one instanced draw, each
+//               culled (and, for a mesh, given its level of detail) on its own;
 //               exactly one of {"list": [transform, ...]} (one "transform" list per copy),
 //               {"grid": {"count": [nx, ny, nz], "spacing": [x, y, z] or a number (default
 //               1)}} (centred on the object's origin), {"scatter": {"count": n, "seed": 1,
 //               "rectangle": [width, depth] (> 0: in the object's xz plane, centred), "scale":
 //               [min, max] (uniform per copy, default [1, 1])}} (std::mt19937: the same copies
 //               on every machine). Each copy's matrix is the object's times its own. At most
-//               262,144 (MAX_INSTANCES_PER_OBJECT) per object, 1,048,576 per scene. Mesh
-//               shapes do not take "instances" yet.
+//               262,144 (MAX_INSTANCES_PER_OBJECT) per object, 1,048,576 billboard copies
+//               and 65,536 mesh copies (MAX_MESH_INSTANCES_PER_SCENE) per scene. A mesh
+//               copy is an object of its own, named "NAME[i]".
 // Every shape may have "crease_angle" (degrees, 0..180): its normals are then recomputed as
 // area-weighted averages, with vertices split wherever faces meet at more than the angle
 // (0: faceted, as flat shading sees it; 180: all smooth, e.g. a box with rounded shading).
@@ -423,7 +425,7 @@ class ObjectBuilder {
       allowed.push_back("material");
       allowed.insert(allowed.end(), billboardFields().begin(), billboardFields().end());
     } else if (spec) {
-      allowed.push_back("instances");  // refused below with its reason
+      allowed.push_back("instances");
       allowed.push_back("material");
       allowed.push_back("crease_angle");
       allowed.push_back("casts_shadows");
@@ -441,16 +443,16 @@ class ObjectBuilder {
     } else if (billboard) {
       addBillboard(parseBillboard(field, name, world, material(field, name)), field);
     } else if (spec) {
-      if (auto f = field.optional("instances"))
-        f->fail("instances of a mesh shape are not built yet (one draw per object)",
-                "\"instances\" on a \"billboard\" object");
       ShapeDesc shape = parseShape(field, *spec);
       Material surface =
           material(field, name);  // checked before the (possibly large) mesh is built
       Object object{name, mesh(shape), world, surface};
       if (auto f = field.optional("casts_shadows")) object.castsShadows = f->boolean();
       if (auto f = field.optional("receives_shadows")) object.receivesShadows = f->boolean();
-      scene_.objects.push_back(object);
+      if (auto f = field.optional("instances"))
+        addCopies(object, parseInstances(*f, world), *f);
+      else
+        scene_.objects.push_back(object);
     }
 
     std::optional<Field> children = field.optional("children");
@@ -509,6 +511,23 @@ class ObjectBuilder {
     scene_.billboards.push_back(std::move(billboard));
   }
 
+  // A mesh shape's "instances": one object per copy, in one instance group.
+  void addCopies(Object object, const std::vector<glm::mat4>& copies, const Field& field) {
+    meshCopies_ += copies.size();
+    if (meshCopies_ > MAX_MESH_INSTANCES_PER_SCENE)
+      field.fail("the scene's mesh shapes have " + std::to_string(meshCopies_) +
+                     " instances in all, above the limit",
+                 "at most " + std::to_string(MAX_MESH_INSTANCES_PER_SCENE) +
+                     " per scene (MAX_MESH_INSTANCES_PER_SCENE)");
+    object.instanceGroup = uint32_t(scene_.objects.size());
+    std::string name = object.name;
+    for (size_t i = 0; i < copies.size(); ++i) {
+      object.name = name + "[" + std::to_string(i) + "]";
+      object.transform = copies[i];
+      scene_.objects.push_back(object);
+    }
+  }
+
   uint32_t mesh(const ShapeDesc& shape) {
     for (uint32_t i = 0; i < scene_.shapes.size(); ++i)
       if (sameShape(scene_.shapes[i], shape)) return i;
@@ -524,6 +543,7 @@ class ObjectBuilder {
   std::filesystem::path baseDirectory_;
   std::vector<uint32_t> unbuilt_;  // Scene::meshes slots still empty
   size_t instanceTotal_ = 0;       // billboard instances so far
+  size_t meshCopies_ = 0;          // mesh-shape instances so far
 };
 
 // "[json.exception.parse_error.101] parse error at line 3, column 8: syntax error ..."

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <map>
+#include <tuple>
 
 #include "core/scene/frustum.h"
 #include "core/scene/lighting.h"
@@ -162,6 +163,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0,
                                        uvTransform ? MATERIAL_UV_TRANSFORM : 0);
     draw.castsShadows = object.castsShadows;
+    draw.instanceGroup = object.instanceGroup;
     // The largest factor the transform stretches a length by.
     draw.objectScale = std::max({glm::length(glm::vec3(object.transform[0])),
                                  glm::length(glm::vec3(object.transform[1])),
@@ -256,6 +258,39 @@ std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
   for (const auto& [z, draw] : opaque) draws.push_back(draw);
   for (const auto& [z, draw] : transparent) draws.push_back(draw);
   return draws;
+}
+
+void batchInstances(std::vector<DrawItem>& draws, std::vector<gpu::ObjectData>& objects) {
+  // A batch is keyed by its group and index range (the level drawn).
+  using Key = std::tuple<uint32_t, uint32_t, int32_t>;
+  auto keyOf = [](const DrawItem& draw) {
+    return Key{draw.instanceGroup, draw.firstIndex, draw.vertexOffset};
+  };
+  std::map<Key, std::vector<uint32_t>> members;  // object indices, in draw order
+  for (const DrawItem& draw : draws)
+    if (!draw.transparent && draw.instanceGroup != Object::kNotInstanced)
+      members[keyOf(draw)].push_back(uint32_t(draw.constants.object.x));
+  if (members.empty()) return;
+  std::vector<DrawItem> batched;
+  batched.reserve(draws.size());
+  for (const DrawItem& draw : draws) {
+    if (draw.transparent || draw.instanceGroup == Object::kNotInstanced) {
+      batched.push_back(draw);
+      continue;
+    }
+    auto found = members.find(keyOf(draw));
+    if (found == members.end()) continue;  // recorded with the group's first copy
+    DrawItem batch = draw;
+    batch.constants.object.x = int32_t(objects.size());
+    batch.instanceCount = uint32_t(found->second.size());
+    for (uint32_t object : found->second) {
+      gpu::ObjectData copy = objects[object];  // push_back may move what it reads
+      objects.push_back(copy);
+    }
+    batched.push_back(batch);
+    members.erase(found);
+  }
+  draws = std::move(batched);
 }
 
 LightLayout lightLayoutOf(const Scene& scene) {

@@ -40,6 +40,12 @@ struct DrawItem {
   uint32_t firstLevel = 0;
   uint32_t levelCount = 0;
   float objectScale = 1.0f;
+  // Object::instanceGroup of its object; batchInstances turns a run of a
+  // group's draws into one draw of instanceCount copies, whose ObjectData
+  // are consecutive from constants.object.x (the vertex stage adds
+  // gl_InstanceIndex).
+  uint32_t instanceGroup = Object::kNotInstanced;
+  uint32_t instanceCount = 1;
 };
 
 // A coarser level of a mesh (core/scene/lod.h): a loaded mesh's simplified
@@ -128,6 +134,16 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
 std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
                                    const glm::mat4& projection, bool cull, bool frontToBack,
                                    uint32_t& culled);
+
+// Instancing: the opaque draws of one instance group at one level (the same
+// index range) become one draw, recorded where the group's first (nearest)
+// copy was, its copies in the order they had. Their ObjectData are appended
+// to `objects` so that they are consecutive; transparent draws stay one by
+// one (each copy has its place in the back-to-front order). The image is
+// the one the draws would give one by one, only the order of the opaque
+// draws between copies of a group changes, which a depth test makes moot
+// except where copies and other objects are coplanar.
+void batchInstances(std::vector<DrawItem>& draws, std::vector<gpu::ObjectData>& objects);
 
 // Lights move to eye space, so the shaders light with V = -position; the
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.

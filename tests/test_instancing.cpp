@@ -1,0 +1,126 @@
+// Mesh instancing on the device: the copies of an "instances" block drawn as
+// one instanced draw give, bit for bit, the image of the same objects drawn
+// one by one (with shadows and levels of detail, which choose per copy), and
+// culling per copy changes no pixel.
+#include <cstring>
+#include <string>
+
+#include "core/scene/scene_json.h"
+#include "gpu_test_support.h"
+
+namespace shadelab::test {
+namespace {
+
+constexpr uint32_t kWidth = 320;
+constexpr uint32_t kHeight = 180;
+
+// Teapots in a row into the distance, on a floor, lit by a shadowing sun.
+std::string teapotsJson(const std::string& teapots) {
+  return R"({"camera": {"eye": [0, 3, 9], "at": [0, 0.5, -6], "fovy": 45, "far": 200},
+    "lights": [{"type": "directional", "direction": [-0.5, -0.8, -0.35], "intensity": 0.9}],
+    "materials": {"glaze": {"kd": [0.8, 0.3, 0.2], "ks": 0.5, "shininess": 48}},
+    "objects": [{"shape": "plane", "size": 80}, )" +
+         teapots + "]}";
+}
+
+constexpr int kCopies = 6;
+
+float copyZ(int i) {
+  return 4.0f - 7.0f * float(i);
+}
+
+std::string instancedTeapots() {
+  std::string list;
+  for (int i = 0; i < kCopies; ++i)
+    list += std::string(i ? ", " : "") + R"([{"translate": [0, 0, )" + std::to_string(copyZ(i)) +
+            R"(]}, {"rotate": {"axis": [0, 1, 0], "degrees": 30}}])";
+  return teapotsJson(R"({"shape": "teapot", "tessellation": 12, "material": "glaze",
+      "instances": {"list": [)" +
+                     list + "]}}");
+}
+
+// The same teapots as objects of their own; `shift` moves the third aside.
+std::string separateTeapots(float shift) {
+  std::string objects;
+  for (int i = 0; i < kCopies; ++i)
+    objects +=
+        std::string(i ? ", " : "") +
+        R"({"shape": "teapot", "tessellation": 12, "material": "glaze", "transform": [{"translate": [)" +
+        std::to_string(i == 2 ? shift : 0.0f) + ", 0, " + std::to_string(copyZ(i)) +
+        R"(]}, {"rotate": {"axis": [0, 1, 0], "degrees": 30}}]})";
+  return teapotsJson(objects);
+}
+
+RenderSettings settings(bool lod) {
+  RenderSettings s{kWidth, kHeight, ShadingModel::Phong};
+  s.shadows = ShadowMethod::Pcf3;
+  s.lod = lod;
+  return s;
+}
+
+bool sameFloats(const ImageRgba& a, const ImageRgba& b) {
+  return a.pixels.size() == b.pixels.size() &&
+         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
+}
+
+class Instancing : public GpuTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(Instancing, CopiesEqualTheSameObjectsOneByOneBitForBit) {
+  bool lod = GetParam();
+  Scene instanced = parseSceneJson(instancedTeapots(), "instanced.json");
+  Scene separate = parseSceneJson(separateTeapots(0.0f), "separate.json");
+  ASSERT_EQ(instanced.objects.size(), size_t(kCopies + 1));
+  EXPECT_EQ(instanced.objects[3].instanceGroup, 1u);
+  EXPECT_EQ(instanced.objects[3].name, "objects[1][2]");
+  EXPECT_EQ(separate.objects[3].instanceGroup, Object::kNotInstanced);
+  RenderResult a = renderer().renderToImage(instanced, settings(lod));
+  RenderResult b = renderer().renderToImage(separate, settings(lod));
+  EXPECT_EQ(a.stats.triangles, b.stats.triangles);
+  EXPECT_EQ(a.stats.coarserDraws, b.stats.coarserDraws);
+  EXPECT_EQ(b.stats.drawCalls, uint32_t(kCopies + 1));
+  // The floor, then one draw per level in use (all copies at one level without LOD).
+  if (lod) {
+    EXPECT_GT(a.stats.coarserDraws, 0u);
+    EXPECT_GT(a.stats.drawCalls, 2u);
+    EXPECT_LT(a.stats.drawCalls, b.stats.drawCalls);
+  } else {
+    EXPECT_EQ(a.stats.drawCalls, 2u);
+  }
+  EXPECT_TRUE(sameFloats(a.image, b.image));
+  // Twin: the third teapot a hundredth of a unit aside is caught by the same comparison.
+  RenderResult moved =
+      renderer().renderToImage(parseSceneJson(separateTeapots(0.01f), "moved.json"), settings(lod));
+  EXPECT_FALSE(sameFloats(a.image, moved.image));
+}
+
+INSTANTIATE_TEST_SUITE_P(LevelsOfDetail, Instancing, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "LodAuto" : "Full"; });
+
+// Copies out of view are culled one by one: fewer drawn, the same pixels,
+// and --instancing off draws the survivors one by one to the same image.
+TEST_F(GpuTest, InstanceCopiesAreCulledOneByOne) {
+  Scene scene =
+      parseSceneJson(teapotsJson(R"({"shape": "teapot", "tessellation": 6, "material": "glaze",
+        "instances": {"grid": {"count": [9, 1, 9], "spacing": [5, 1, 5]}}})"),
+                     "grid.json");
+  scene.camera.eye = {0.0f, 4.0f, 24.0f};
+  scene.camera.at = {6.0f, 0.0f, 0.0f};
+  RenderSettings culled = settings(false);
+  RenderResult a = renderer().renderToImage(scene, culled);
+  RenderSettings all = culled;
+  all.frustumCulling = false;
+  RenderResult b = renderer().renderToImage(scene, all);
+  RenderSettings oneByOne = culled;
+  oneByOne.instancing = false;
+  RenderResult c = renderer().renderToImage(scene, oneByOne);
+  EXPECT_GT(a.stats.culledDraws, 10u);
+  EXPECT_EQ(b.stats.culledDraws, 0u);
+  EXPECT_EQ(a.stats.drawCalls, 2u);
+  EXPECT_EQ(c.stats.drawCalls, 82u - c.stats.culledDraws);
+  EXPECT_LT(a.stats.triangles, b.stats.triangles);
+  EXPECT_TRUE(sameFloats(a.image, b.image));
+  EXPECT_TRUE(sameFloats(a.image, c.image));
+}
+
+}  // namespace
+}  // namespace shadelab::test
