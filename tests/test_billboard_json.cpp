@@ -2,6 +2,7 @@
 // the scatter's determinism, and the sphere test per-instance culling uses.
 #include <gtest/gtest.h>
 
+#include "core/base/errors.h"
 #include "core/scene/frustum.h"
 #include "core/scene/scene_json.h"
 
@@ -58,6 +59,28 @@ TEST(BillboardJson, ScatterIsSeededAndStaysInItsRectangle) {
     EXPECT_GE(m[0][0], 0.5f);
     EXPECT_LE(m[0][0], 2.0f);
   }
+}
+
+// "yaw" turns each copy about y without moving it: its angle is drawn after
+// the position and scale, so the same seed places the copies as before.
+TEST(BillboardJson, ScatterYawTurnsCopiesInPlace) {
+  auto scatter = [](const std::string& yaw) {
+    return withBillboard(
+               R"("instances": {"scatter": {"count": 50, "seed": 3, "rectangle": [4, 2])" + yaw +
+               "}}")
+        .billboards[0]
+        .instances;
+  };
+  std::vector<glm::mat4> plain = scatter(""), turned = scatter(R"(, "yaw": [90, 90])");
+  ASSERT_EQ(turned.size(), plain.size());
+  for (size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(turned[i][3], plain[i][3]);
+    // x turns to -z: 90 degrees counter-clockwise about y.
+    EXPECT_NEAR(turned[i][0].z, -1.0f, 1e-6f);
+    EXPECT_NEAR(turned[i][0].x, 0.0f, 1e-6f);
+  }
+  EXPECT_THROW(scatter(R"(, "yaw": [10, 5])"), InputError);
+  EXPECT_THROW(scatter(R"(, "yaw": [0, 400])"), InputError);
 }
 
 TEST(BillboardJson, ListTakesOneTransformEach) {

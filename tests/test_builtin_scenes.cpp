@@ -167,10 +167,11 @@ std::filesystem::path sceneFile(const std::string& name) {
   return std::filesystem::path(SHADELAB_ASSET_DIR) / "scenes" / (name + ".json");
 }
 
-TEST(BuiltinScenes, TheTwelveScenesOfTheCommandLine) {
-  EXPECT_THAT(builtinSceneNames(),
-              testing::ElementsAre("bump", "default", "dense", "env", "highlight", "mip-plane",
-                                   "shadows", "spheres", "teapot", "trees", "whitted", "zfight"));
+TEST(BuiltinScenes, TheThirteenScenesOfTheCommandLine) {
+  EXPECT_THAT(
+      builtinSceneNames(),
+      testing::ElementsAre("bump", "default", "dense", "env", "highlight", "lod", "mip-plane",
+                           "shadows", "spheres", "teapot", "trees", "whitted", "zfight"));
 }
 
 TEST(BuiltinScenes, EachFileInAssetsLoadsToTheEmbeddedScene) {

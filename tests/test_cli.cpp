@@ -206,11 +206,11 @@ TEST_F(Cli, ScenesListsEachBuiltInWithItsDescription) {
   CommandResult r = run("scenes");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::string lines = "\n" + r.output;
-  for (const char* name : {"bump", "default", "dense", "env", "highlight", "mip-plane", "shadows",
-                           "spheres", "teapot", "trees", "whitted", "zfight"})
+  for (const char* name : {"bump", "default", "dense", "env", "highlight", "lod", "mip-plane",
+                           "shadows", "spheres", "teapot", "trees", "whitted", "zfight"})
     EXPECT_NE(lines.find(std::string("\n") + name + " "), std::string::npos) << name;
   EXPECT_NE(r.output.find("teapot     The Utah teapot"), std::string::npos) << r.output;
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 12) << "one line each, no more";
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 13) << "one line each, no more";
 }
 
 // The copy a user makes renders exactly as the built-in it came from.
@@ -1004,6 +1004,39 @@ TEST_F(Cli, BenchSweepsFrameSizesAndLightCounts) {
         << refused.output;
   }
   EXPECT_FALSE(std::filesystem::exists(out("bad")));
+}
+
+// Levels of detail are an axis (issue 17): off and each bound a row, each
+// bound's image measured against off's with mean FLIP, charted in lod.png.
+TEST_F(Cli, BenchSweepsLevelOfDetailBounds) {
+  CommandResult r = run("bench lod -o " + out("lod") +
+                        " --size 160x90 --lod off,2 --frames 3 --rounds 1 --modes phong "
+                        "--tess 1 --msaa 1 --reference none");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  auto rows = csvRows(readText(out("lod/results.csv")));
+  ASSERT_EQ(rows.size(), 3u) << "header, off, 2 px";
+  size_t last = rows[0].size() - 1;
+  ASSERT_EQ(rows[0][last], "flip_vs_lod_off");
+  ASSERT_EQ(rows[0][last - 1], "coarser_draws");
+  ASSERT_EQ(rows[0][last - 2], "lod_error_px");
+  EXPECT_EQ(rows[1][last - 2], "0");
+  EXPECT_EQ(rows[1][last - 1], "0");
+  ASSERT_EQ(rows[1].size(), rows[0].size());
+  EXPECT_EQ(rows[1][last], "") << "off has no FLIP against itself";
+  ASSERT_EQ(rows[2].size(), rows[0].size());
+  EXPECT_EQ(rows[2][last - 2], "2");
+  EXPECT_GT(std::stoi(rows[2][last - 1]), 10);
+  EXPECT_LT(std::stoull(rows[2][9]), std::stoull(rows[1][9]) / 4) << "triangles";
+  double flip = std::stod(rows[2][last]);
+  EXPECT_GT(flip, 0.0);
+  EXPECT_LT(flip, 0.05);
+  expectDrawnChart(out("lod/lod.png"));
+  for (const char* bad : {"--lod 0", "--lod fine", "--lod 2,,4"}) {
+    CommandResult refused = run("bench lod -o " + out("badlod") + " " + bad);
+    EXPECT_EQ(refused.exitCode, 2) << bad << "\n" << refused.output;
+    EXPECT_NE(refused.output.find("--lod"), std::string::npos) << refused.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out("badlod")));
 }
 
 // Progress with an ETA is drawn on a terminal only (issue 18): through a

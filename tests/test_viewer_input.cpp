@@ -147,6 +147,30 @@ TEST(ViewerScript, WaitReferenceIsAStep) {
   EXPECT_EQ(steps[1].kind, ScriptStep::Kind::WaitReference);
 }
 
+// camera-path FILE reads and checks the file when the script is parsed, so
+// a bad path stops the session before its first frame.
+TEST(ViewerScript, CameraPathIsReadWhenParsed) {
+  std::filesystem::path dir = std::filesystem::path(SHADELAB_TEST_OUTPUT_DIR) / "script";
+  std::filesystem::create_directories(dir);
+  std::string good = (dir / "path.json").string(), bad = (dir / "bad.json").string();
+  std::ofstream(good) << R"({"frames": 4, "cameras": [{"eye": [0, 1, 5]}, {"eye": [5, 1, 0]}]})";
+  std::ofstream(bad) << R"({"frames": 1, "cameras": [{"eye": [0, 1, 5]}, {"eye": [5, 1, 0]}]})";
+  std::vector<ScriptStep> steps =
+      parseViewerScriptText("camera-path " + good + "\nframes 1\n", "s.txt", kKeys);
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps[0].kind, ScriptStep::Kind::CameraPath);
+  EXPECT_EQ(steps[0].path, good);
+  EXPECT_NE(steps[0].text.find("\"frames\": 4"), std::string::npos);
+  EXPECT_NE(
+      parseError("camera-path " + bad)
+          .find("bad.txt:1: 'camera-path " + bad + "': expected a readable camera path file ("),
+      std::string::npos)
+      << parseError("camera-path " + bad);
+  EXPECT_NE(parseError("camera-path " + (dir / "none.json").string()).find("none.json"),
+            std::string::npos);
+  EXPECT_NE(parseError("camera-path").find("'camera-path FILE'"), std::string::npos);
+}
+
 // Until a background trace is collected (no clock: it finishes when it does).
 bool collectWhenDone(BackgroundTrace& trace) {
   while (trace.state() == BackgroundTrace::State::Tracing)

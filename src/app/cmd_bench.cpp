@@ -39,6 +39,7 @@ struct BenchCommandOptions {
   std::string filters = "material";
   std::string shadows = "off";
   std::string lights = "scene";
+  std::string lod = "off";
   std::vector<int64_t> shadowSizes{kDefaultShadowMapSize};
   uint32_t frames = 60;
   uint32_t rounds = 2;
@@ -120,13 +121,35 @@ std::vector<uint32_t> parseLightList(const std::string& text) {
   return counts;
 }
 
+// "off,0.5,2" -> {0, 0.5, 2} (0: --lod off); throws InputError naming a bad entry.
+std::vector<float> parseLodList(const std::string& text) {
+  std::vector<float> bounds;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (item == "off") {
+      bounds.push_back(0.0f);
+      continue;
+    }
+    char* end = nullptr;
+    float bound = item.empty() ? 0.0f : std::strtof(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !(bound >= 0.01f && bound <= 100.0f))
+      throw InputError("--lod '" + item +
+                       "': expected off or an error bound from 0.01 to 100 pixels");
+    bounds.push_back(bound);
+  }
+  if (bounds.empty()) throw InputError("--lod '" + text + "': expected at least one bound");
+  return bounds;
+}
+
 // One line per setting: cost (with the multiple of the unlit floor), memory,
 // error; settings on the Pareto front are starred.
 void printResults(const std::vector<BenchResult>& results, const ErrorMetric& metric,
-                  size_t metricIndex, bool showFrame, FILE* out) {
+                  size_t metricIndex, bool showFrame, bool showLod, FILE* out) {
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, metricIndex), metricIndex, metric);
   if (showFrame) std::fprintf(out, "%-10s %6s ", "size", "lights");
+  if (showLod) std::fprintf(out, "%-6s %7s %8s ", "lod px", "coarser", "FLIP/off");
   std::fprintf(out, "%-12s %5s %5s %-9s %-10s %10s %10s %8s %8s %8s %8s %9s\n", "mode", "tess",
                "msaa", "filter", "shadows", "triangles", "median ms", "p95 ms", "x floor", "dev MB",
                "rss MB", metric.name.c_str());
@@ -138,7 +161,7 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
           f.point.msaaSamples == r.point.msaaSamples && f.point.filter == r.point.filter &&
           f.point.shadows == r.point.shadows && f.point.shadowMapSize == r.point.shadowMapSize &&
           f.point.width == r.point.width && f.point.height == r.point.height &&
-          f.point.lights == r.point.lights)
+          f.point.lights == r.point.lights && f.point.lodError == r.point.lodError)
         floor = &f;
     char ratio[16] = "-";
     if (floor) std::snprintf(ratio, sizeof ratio, "%.2f", r.deviceMedianMs / floor->deviceMedianMs);
@@ -146,6 +169,12 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
     if (showFrame) {
       std::string frame = std::to_string(r.point.width) + "x" + std::to_string(r.point.height);
       std::fprintf(out, "%-10s %6u ", frame.c_str(), r.lights);
+    }
+    if (showLod) {
+      char bound[16] = "off", flip[16] = "-";
+      if (r.point.lodError > 0.0f) std::snprintf(bound, sizeof bound, "%g", r.point.lodError);
+      if (r.flipAgainstFull >= 0.0) std::snprintf(flip, sizeof flip, "%.4f", r.flipAgainstFull);
+      std::fprintf(out, "%-6s %7u %8s ", bound, r.coarserDraws, flip);
     }
     char error[16] = "-";
     if (metricIndex < r.errors.size())
@@ -171,7 +200,8 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
                  parseShadowList(options.shadows),
                  checkShadowSizes(options.shadowSizes),
                  parseSizeList(options.size),
-                 parseLightList(options.lights)};
+                 parseLightList(options.lights),
+                 parseLodList(options.lod)};
   glm::uvec2 size = axes.sizes.front();
   // none: time only (a scaling sweep need not trace each size and light count).
   BenchOptions bench{options.frames, options.rounds,
@@ -184,7 +214,7 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   checkOutputFolder(options.output, "results.csv");  // made only with the results
   std::vector<BenchPoint> points = benchPoints(axes);
   // The raster reference is 4x; the sweep's finest point may be finer.
-  float finest = 4.0f;
+  float finest = options.reference == "raster" ? 4.0f : 0.125f;
   for (const BenchPoint& point : points) finest = std::max(finest, point.tessellation);
   checkTriangleBudget(scene, finest, global.maxTriangles, "the sweep's finest tessellation",
                       "--max-triangles");
@@ -228,15 +258,24 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   ImageU8 scaling = scalingChart(results, "Scene " + scene.name);
   if (scaling.width > 0)
     outputs.add(folder / "scaling.png", [&] { writeImage(scaling, folder / "scaling.png"); });
+  ImageU8 levels = levelOfDetailChart(results, "Scene " + scene.name + " at " + options.size);
+  if (levels.width > 0)
+    outputs.add(folder / "lod.png", [&] { writeImage(levels, folder / "lod.png"); });
   outputs.keep();
   FILE* out = options.json.human();
   bool showFrame = axes.sizes.size() > 1 || axes.lights != std::vector<uint32_t>{0};
-  printResults(results, charted, chartedIndex, showFrame, out);
+  bool showLod = axes.lodErrors != std::vector<float>{0.0f};
+  printResults(results, charted, chartedIndex, showFrame, showLod, out);
+  if (showLod)
+    std::fprintf(out,
+                 "lod px: --lod auto's error bound (off: every object in full); coarser: draws "
+                 "at a simplified level; FLIP/off: mean FLIP against the same setting at --lod "
+                 "off\n");
   std::fprintf(out,
-               "device medians over %zu steady frames per setting; wrote %s/{results.csv%s%s}\n",
+               "device medians over %zu steady frames per setting; wrote %s/{results.csv%s%s%s}\n",
                results.empty() ? size_t(0) : results.front().frames, folder.c_str(),
                measured ? ", error_vs_time.png, error_vs_triangles.png" : "",
-               scaling.width > 0 ? ", scaling.png" : "");
+               scaling.width > 0 ? ", scaling.png" : "", levels.width > 0 ? ", lod.png" : "");
   nlohmann::json json = {{"scene", scene.name},
                          {"settings",
                           {{"width", size.x},
@@ -252,6 +291,7 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
     json["outputs"]["error_vs_triangles"] = jsonPath(folder / "error_vs_triangles.png");
   }
   if (scaling.width > 0) json["outputs"]["scaling"] = jsonPath(folder / "scaling.png");
+  if (levels.width > 0) json["outputs"]["lod"] = jsonPath(folder / "lod.png");
   std::vector<size_t> front =
       benchParetoFront(results, chartedResults(results, chartedIndex), chartedIndex, charted);
   for (size_t i = 0; i < results.size(); ++i) {
@@ -313,6 +353,12 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
                    "Light counts, comma-separated: scene (the scene's own lights) or 1 to 8 "
                    "point lights on a ring above the scene, each 1/N as bright (the lights axis "
                    "of scaling.png)")
+      ->capture_default_str();
+  command
+      ->add_option("--lod", options->lod,
+                   "Levels of detail, comma-separated: off (every object in full) or --lod auto's "
+                   "error bound in pixels; with off and a bound, each bound's image is measured "
+                   "against off's (mean FLIP) and charted in lod.png")
       ->capture_default_str();
   command
       ->add_option("--reference", options->reference,

@@ -102,7 +102,8 @@ nlohmann::json toJson(const BenchPoint& point) {
           {"shadow_map_size", point.shadows == ShadowMethod::Off ? 0u : point.shadowMapSize},
           {"width", point.width},
           {"height", point.height},
-          {"lights", point.lights}};
+          {"lights", point.lights},
+          {"lod_error_px", point.lodError}};
 }
 
 nlohmann::json toJson(const BenchResult& result, const std::vector<ErrorMetric>& metrics) {
@@ -119,7 +120,10 @@ nlohmann::json toJson(const BenchResult& result, const std::vector<ErrorMetric>&
           {"wall_p95_ms", result.wallP95Ms},
           {"device_memory_bytes", result.deviceMemoryBytes},
           {"peak_resident_bytes", result.peakResidentBytes},
-          {"metrics", errors}};
+          {"metrics", errors},
+          {"coarser_draws", result.coarserDraws},
+          {"flip_vs_lod_off", result.flipAgainstFull >= 0.0 ? nlohmann::json(result.flipAgainstFull)
+                                                            : nlohmann::json(nullptr)}};
 }
 
 }  // namespace shadelab

@@ -202,4 +202,73 @@ ImageU8 scalingChart(const std::vector<BenchResult>& results, const std::string&
   return drawChartRow(charts, 520, 420);
 }
 
+ImageU8 levelOfDetailChart(const std::vector<BenchResult>& results, const std::string& title) {
+  if (results.empty()) return {};
+  // The other axes at the first result's values: only the bound and the model vary.
+  BenchPoint first = results.front().point;
+  auto sameOtherwise = [&](const BenchPoint& point) {
+    BenchPoint probe = point;
+    probe.lodError = first.lodError;
+    probe.model = first.model;
+    return probe == first;
+  };
+  Chart time, error;
+  time.title = title;
+  time.subtitle = "frame time (device median) against --lod-error; flat lines: --lod off";
+  time.x = {"error bound (pixels, log)", AxisScale::Log};
+  time.y = {"device median (ms)", AxisScale::Linear};
+  error.title = "Accuracy of the levels";
+  error.subtitle = "mean FLIP against the same model at --lod off; grey: 0.01";
+  error.x = time.x;
+  error.y = {"mean FLIP", AxisScale::Linear};
+  double low = 1e30, high = 0.0;
+  for (const BenchResult& r : results)
+    if (r.point.lodError > 0.0f && sameOtherwise(r.point)) {
+      low = std::min(low, double(r.point.lodError));
+      high = std::max(high, double(r.point.lodError));
+    }
+  if (high == 0.0) return {};
+  std::map<ShadingModel, std::vector<const BenchResult*>> byModel;
+  std::map<ShadingModel, const BenchResult*> full;
+  for (const BenchResult& r : results) {
+    if (!sameOtherwise(r.point)) continue;
+    if (r.point.lodError > 0.0f)
+      byModel[r.point.model].push_back(&r);
+    else
+      full[r.point.model] = &r;
+  }
+  for (auto& [model, members] : byModel) {
+    std::sort(members.begin(), members.end(), [](const BenchResult* a, const BenchResult* b) {
+      return a->point.lodError < b->point.lodError;
+    });
+    glm::vec3 color = chartColor(size_t(model));
+    std::string name(shadingModelName(model));
+    ChartSeries times{name, color, {}, true, Marker::Dot};
+    ChartSeries flips{name, color, {}, true, Marker::Dot};
+    for (const BenchResult* r : members) {
+      char label[32];
+      std::snprintf(label, sizeof label, "%.1f ms", r->deviceMedianMs);
+      times.points.push_back({r->point.lodError, r->deviceMedianMs, label});
+      if (r->flipAgainstFull >= 0.0)
+        flips.points.push_back({r->point.lodError, r->flipAgainstFull, ""});
+    }
+    time.series.push_back(times);
+    if (!flips.points.empty()) error.series.push_back(flips);
+    if (auto found = full.find(model); found != full.end()) {
+      char label[48];
+      std::snprintf(label, sizeof label, "%s --lod off: %.1f ms", name.c_str(),
+                    found->second->deviceMedianMs);
+      time.series.push_back(
+          {"",
+           color,
+           {{low, found->second->deviceMedianMs, label}, {high, found->second->deviceMedianMs, ""}},
+           true,
+           Marker::None});
+    }
+  }
+  error.series.push_back(
+      {"", glm::vec3(0.5f), {{low, 0.01, "0.01"}, {high, 0.01, ""}}, true, Marker::None});
+  return drawChartRow({time, error}, 560, 380);
+}
+
 }  // namespace shadelab

@@ -30,4 +30,11 @@ ImageU8 errorTriangleChart(const std::vector<BenchResult>& results, size_t metri
 // other axes held at their first value. Empty (0x0) when none varies.
 ImageU8 scalingChart(const std::vector<BenchResult>& results, const std::string& title);
 
+// Levels of detail (`bench --lod`): two panels over the error bound in
+// pixels, a line per shading model (other axes at their first value): the
+// frame time, with --lod off's as a flat line, and the mean FLIP against
+// the same model at --lod off, with the 0.01 line. Empty (0x0) unless the
+// results hold --lod off and at least one bound for some model.
+ImageU8 levelOfDetailChart(const std::vector<BenchResult>& results, const std::string& title);
+
 }  // namespace shadelab

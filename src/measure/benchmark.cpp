@@ -11,6 +11,7 @@
 #include "core/base/errors.h"
 #include "core/base/process_memory.h"
 #include "core/base/stats.h"
+#include "core/metrics/metrics.h"
 #include "core/scene/frustum.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/texture.h"
@@ -33,9 +34,10 @@ std::vector<BenchPoint> benchPoints(const BenchAxes& axes) {
         for (uint32_t samples : axes.msaa)
           for (const std::optional<TextureFilter>& filter : axes.filters)
             for (auto [method, size] : shadows)
-              for (ShadingModel model : axes.models)
-                points.push_back(
-                    {model, tessellation, samples, filter, method, size, frame.x, frame.y, lights});
+              for (float lod : axes.lodErrors)
+                for (ShadingModel model : axes.models)
+                  points.push_back({model, tessellation, samples, filter, method, size, frame.x,
+                                    frame.y, lights, lod});
   return points;
 }
 
@@ -75,10 +77,17 @@ std::string benchPointName(const BenchPoint& point) {
                 point.filter ? textureFilterName(*point.filter) : "",
                 point.shadows != ShadowMethod::Off ? " " : "",
                 point.shadows != ShadowMethod::Off ? benchShadowName(point).c_str() : "");
-  if (point.lights == 0) return text;
-  char lights[32];
-  std::snprintf(lights, sizeof lights, " %u lights", point.lights);
-  return std::string(text).append(lights);
+  std::string name = text;
+  char more[48];
+  if (point.lights > 0) {
+    std::snprintf(more, sizeof more, " %u lights", point.lights);
+    name += more;
+  }
+  if (point.lodError > 0.0f) {
+    std::snprintf(more, sizeof more, " lod %g px", point.lodError);
+    name += more;
+  }
+  return name;
 }
 
 std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
@@ -110,6 +119,11 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
 
   std::vector<BenchResult> results(points.size());
   std::vector<std::vector<double>> device(points.size()), wall(points.size());
+  // With a level-of-detail axis, each point's first image, to measure the
+  // levels against the same setting drawn in full.
+  bool levels = std::any_of(points.begin(), points.end(),
+                            [](const BenchPoint& point) { return point.lodError > 0.0f; });
+  std::vector<ImageU8> images(levels ? points.size() : 0);
   for (uint32_t round = 0; round < options.rounds; ++round)
     for (size_t i = 0; i < points.size(); ++i) {
       const BenchPoint& point = points[i];
@@ -120,6 +134,8 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       settings.textures.filterOverride = point.filter;
       settings.shadows = point.shadows;
       settings.shadowMapSize = point.shadowMapSize;
+      settings.lod = point.lodError > 0.0f;
+      if (settings.lod) settings.lodErrorPixels = point.lodError;
       resetPeakResident();
       RenderResult run =
           renderer.renderToImage(scenes.at({point.tessellation, point.lights}), settings);
@@ -133,6 +149,8 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       result.point = point;
       result.triangles = stats.triangles;
       result.lights = uint32_t(scenes.at({point.tessellation, point.lights}).lights.size());
+      result.coarserDraws = stats.coarserDraws;
+      if (round == 0 && levels) images[i] = encodeSrgb8(run.image);
       std::string errors;
       // Output is deterministic, so the first round's image stands for all.
       if (round == 0 && measured) {
@@ -164,6 +182,14 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
     results[i].wallMedianMs = median(wall[i]);
     results[i].wallP95Ms = percentile(wall[i], 95.0);
   }
+  for (size_t i = 0; levels && i < points.size(); ++i) {
+    BenchPoint full = points[i];
+    full.lodError = 0.0f;
+    auto found = std::find(points.begin(), points.end(), full);
+    if (points[i].lodError > 0.0f && found != points.end())
+      results[i].flipAgainstFull =
+          flipError(images[size_t(found - points.begin())], images[i]).mean;
+  }
   return results;
 }
 
@@ -175,7 +201,7 @@ std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions
          "device_memory_mb,peak_rss_mb,reference";
   for (const ErrorMetric& metric : options.metrics) csv << ',' << metric.name;
   // Columns added later go last, so that older readers' positions hold.
-  csv << ",lights\n";
+  csv << ",lights,lod_error_px,coarser_draws,flip_vs_lod_off\n";
   for (const BenchResult& r : results) {
     csv << sceneName << ',' << r.point.width << ',' << r.point.height << ','
         << shadingModelName(r.point.model) << ',' << r.point.tessellation << ','
@@ -189,7 +215,9 @@ std::string benchCsv(const std::vector<BenchResult>& results, const BenchOptions
       csv << ',';
       if (m < r.errors.size()) csv << r.errors[m];
     }
-    csv << ',' << r.lights << '\n';
+    csv << ',' << r.lights << ',' << r.point.lodError << ',' << r.coarserDraws << ',';
+    if (r.flipAgainstFull >= 0.0) csv << r.flipAgainstFull;
+    csv << '\n';
   }
   return csv.str();
 }

@@ -29,6 +29,10 @@ struct BenchPoint {
   uint32_t shadowMapSize = kDefaultShadowMapSize;  // meaningless with shadows off
   uint32_t width = 1280, height = 720;             // frame size
   uint32_t lights = 0;  // 0: the scene's own lights; else that many on a ring (withLightRing)
+  // 0: every object drawn in full (--lod off); else --lod auto with this
+  // error bound in pixels.
+  float lodError = 0.0f;
+  bool operator==(const BenchPoint&) const = default;
 };
 
 // The sweep: every combination, models varying fastest.
@@ -41,6 +45,7 @@ struct BenchAxes {
   std::vector<uint32_t> shadowMapSizes{kDefaultShadowMapSize};  // only with shadows on
   std::vector<glm::uvec2> sizes{{1280, 720}};
   std::vector<uint32_t> lights{0};
+  std::vector<float> lodErrors{0.0f};
 };
 std::vector<BenchPoint> benchPoints(const BenchAxes& axes);
 // "phong t2 4x", "phong t2 4x nearest", "phong t1 1x hard 2048"
@@ -79,6 +84,11 @@ struct BenchResult {
   uint64_t deviceMemoryBytes = 0;
   uint64_t peakResidentBytes = 0;
   std::vector<double> errors;  // per BenchOptions::metrics, against the reference
+  uint32_t coarserDraws = 0;   // --lod auto: draws at a simplified level, per frame
+  // With --lod auto, when the sweep has the same setting at --lod off: the
+  // mean FLIP of this image against that one (what the levels cost in
+  // accuracy); -1 otherwise.
+  double flipAgainstFull = -1.0;
 };
 
 // `progress` receives one line per measured run. Throws InputError for

@@ -178,6 +178,7 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     gpu::BillboardInstance instance;
   };
   std::vector<Blended> blended;
+  std::vector<std::pair<float, gpu::BillboardInstance>> cutOut;  // one billboard's, with depth
   glm::mat3 rotation(view);
   for (uint32_t b = 0; b < scene.billboards.size(); ++b) {
     const GpuBillboard& billboard = scene.billboards[b];
@@ -187,6 +188,7 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     glm::vec3 rise =
         int(billboard.constants.optics.x) == BILLBOARD_SCREEN ? glm::vec3(0, 1, 0) : up;
     BillboardDraw draw{b, result.instances, 0, 0.0f};
+    cutOut.clear();
     for (const BillboardPlacement& placement : billboard.instances) {
       // Any corner lies within the diagonal of the anchor, whichever way the quad turns.
       float radius = glm::length(placement.size);
@@ -197,14 +199,20 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
       gpu::BillboardInstance instance{
           glm::vec4(glm::vec3(view * glm::vec4(placement.position, 1.0f)), placement.size.x),
           glm::vec4(up, placement.size.y)};
-      if (billboard.blended) {
-        float centreZ = instance.centre.z + rise.z * (0.5f - anchor) * placement.size.y;
+      float centreZ = instance.centre.z + rise.z * (0.5f - anchor) * placement.size.y;
+      if (billboard.blended)
         blended.push_back({centreZ, b, instance});
-        continue;
-      }
-      out[result.instances++] = instance;
-      ++draw.instanceCount;
+      else
+        cutOut.emplace_back(centreZ, instance);
     }
+    // Cut-out copies front to back (the largest eye-space z is the nearest):
+    // the depth test then rejects the fragments of the trees behind before
+    // their shading runs. In scatter order, 3,000 trees on `lod` cost ~45 ms
+    // of a 1280x720 frame, most of it shading fragments later hidden.
+    std::stable_sort(cutOut.begin(), cutOut.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& [z, instance] : cutOut) out[result.instances++] = instance;
+    draw.instanceCount = uint32_t(cutOut.size());
     if (draw.instanceCount > 0) result.cutOut.push_back(draw);
   }
   // Back to front: eye space looks down -z. Ties keep scene order.

@@ -501,6 +501,8 @@ void Renderer::recordTransparent(VkCommandBuffer cmd, ShadingModel model,
 
 void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
                             std::vector<DrawItem>& draws, RenderStats& stats) {
+  double start = nowMs();
+  stats.levelDraws.fill(0);
   ViewSize view{source.camera, settings_.width, settings_.height};
   std::vector<float> projected;
   for (DrawItem& draw : draws) {
@@ -514,10 +516,12 @@ void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
       projected.push_back(scene.levels[draw.firstLevel + i].error * pixels);
     uint32_t& drawn = drawnLevels_[uint32_t(draw.constants.object.x)];
     drawn = chooseLevel(projected, drawn, settings_.lodErrorPixels);
+    ++stats.levelDraws[std::min<size_t>(drawn, stats.levelDraws.size() - 1)];
     if (drawn == 0) continue;
     applyLevel(scene, draw, drawn);
     ++stats.coarserDraws;
   }
+  stats.lodSelectMs = nowMs() - start;
 }
 
 void Renderer::applyLevel(const GpuScene& scene, DrawItem& draw, uint32_t level) {

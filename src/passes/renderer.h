@@ -119,6 +119,11 @@ struct RenderStats {
   uint32_t billboardInstances = 0;  // drawn per frame (after culling), in drawCalls' draws
   uint32_t culledInstances = 0;     // billboard instances outside the view frustum
   uint32_t coarserDraws = 0;        // --lod auto: draws at a simplified level, per frame
+  // --lod auto, per frame: the objects (with a detail chain, in view) drawn
+  // at each level, 0 in full, the last entry that level and every coarser
+  // one; and the host time the choice took (Renderer::chooseLevels).
+  std::array<uint32_t, 6> levelDraws{};
+  double lodSelectMs = 0.0;
   // Device memory allocated in the process while the frames ran (target,
   // meshes, per-frame buffers, readback), from resources.h's accounting.
   uint64_t deviceMemoryBytes = 0;

@@ -23,6 +23,7 @@ class CameraController {
   void zoom(float steps);
 
   const Camera& camera() const { return camera_; }
+  void set(const Camera& camera) { camera_ = camera; }  // a camera path's next frame
 
  private:
   Camera camera_;

@@ -11,6 +11,7 @@
 #include "core/base/image.h"
 #include "core/base/split_screen.h"
 #include "core/base/stats.h"
+#include "core/scene/camera_path.h"
 #include "core/scene/lod.h"
 #include "core/vulkan/vk_check.h"
 #include "view/present_pass.h"
@@ -151,6 +152,13 @@ void Viewer::run() {
               outOfDate_, suboptimal_);
   std::printf("view: %u scene uploads (geometry, textures, environment)\n",
               renderer_.uploadCount());
+  if (!lodSelectMs_.empty()) {
+    std::vector<double> select(lodSelectMs_.begin(), lodSelectMs_.end());
+    std::printf(
+        "view: levels of detail chosen in %.3f ms per frame (median of the last %zu), "
+        "%zu objects\n",
+        median(select), select.size(), scene_.objects.size());
+  }
 }
 
 void Viewer::uploadScene() {
@@ -250,6 +258,12 @@ void Viewer::runStep(const ScriptStep& step) {
       waitingForReference_ = true;
       framesToRun_ = 1;
       break;
+    case ScriptStep::Kind::CameraPath:
+      pathCameras_.clear();
+      for (const Camera& camera : parseCameraPath(step.text, step.path, sceneCamera_))
+        pathCameras_.push_back(camera);
+      framesToRun_ = uint32_t(pathCameras_.size());
+      break;
     case ScriptStep::Kind::Quit:
       quit_ = true;
       break;
@@ -324,6 +338,10 @@ bool Viewer::drawFrame() {
   }
 
   VkExtent2D extent = swapchain_.extent();
+  if (!pathCameras_.empty()) {  // a script's camera path: one camera per frame
+    camera_.set(pathCameras_.front());
+    pathCameras_.pop_front();
+  }
   scene_.camera = camera_.camera();
   updateReference();
   VkCommandBuffer cmd = renderer_.beginFrame();
@@ -331,6 +349,8 @@ bool Viewer::drawFrame() {
   renderer_.recordScene(gpuScene_, scene_, counts);
   submittedTriangles_ = counts.triangles;
   coarserDraws_ = counts.coarserDraws;
+  levelDraws_ = counts.levelDraws;
+  if (settings_.lod) pushBounded(lodSelectMs_, {counts.lodSelectMs});
 
   SlotWork& work = slotWork_[slot];
   // Against Phong, every metricsInterval frames; against a traced reference,

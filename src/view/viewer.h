@@ -151,8 +151,10 @@ class Viewer {
 
   std::deque<double> deviceMs_, frameDeviceMs_, wallMs_, shadowMs_;  // the last 120 frames
   uint64_t framesDrawn_ = 0;
-  uint64_t submittedTriangles_ = 0;  // last frame, after frustum culling, per view
-  uint32_t coarserDraws_ = 0;        // last frame: draws at a simplified level (--lod)
+  uint64_t submittedTriangles_ = 0;       // last frame, after frustum culling, per view
+  uint32_t coarserDraws_ = 0;             // last frame: draws at a simplified level (--lod)
+  std::array<uint32_t, 6> levelDraws_{};  // last frame: objects per level (--lod)
+  std::deque<double> lodSelectMs_;        // host time choosing the levels, the last 120 frames
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;
   std::vector<SplitError> splitErrors_;
   bool splitErrorsAgainstReference_ = false;
@@ -172,6 +174,7 @@ class Viewer {
 
   size_t scriptPosition_ = 0;
   uint32_t framesToRun_ = 0;
+  std::deque<Camera> pathCameras_;  // a script's camera-path step: the frames still to draw
   int scriptLine_ = 0;
 };
 

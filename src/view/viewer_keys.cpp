@@ -274,6 +274,17 @@ OverlayText Viewer::overlayText() const {
       (views > 1 ? " (" + std::to_string(views) + " views)" : "") + ", " +
       withThousands(gpuScene_.triangles) + " in the scene" +
       (settings_.lod ? "; lod " + std::to_string(coarserDraws_) + " draws simplified" : ""));
+  if (settings_.lod) {
+    // Objects per level, 0 in full; the last entry also counts coarser ones.
+    std::string levels;
+    for (size_t i = 0; i < levelDraws_.size(); ++i)
+      if (levelDraws_[i] > 0)
+        levels += (levels.empty() ? "" : " ") + std::to_string(i) +
+                  (i + 1 == levelDraws_.size() ? "+" : "") + ":" + std::to_string(levelDraws_[i]);
+    std::vector<double> select(lodSelectMs_.begin(), lodSelectMs_.end());
+    text.status.push_back("lod levels " + (levels.empty() ? std::string("-") : levels) +
+                          " (level:objects); chosen in " + formatMs(median(select)));
+  }
   std::string models;
   for (ShadingModel model : settings_.splitModels)
     models += (models.empty() ? "" : " | ") + std::string(shadingModelName(model));

@@ -9,6 +9,7 @@
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/image.h"
+#include "core/scene/camera_path.h"
 
 namespace shadelab {
 namespace {
@@ -99,6 +100,18 @@ ScriptStep parseLine(const LineReader& reader, const std::vector<std::string>& k
     } catch (const InputError& error) {
       reader.fail(std::string("a writable .png path (") + error.what() + ")");
     }
+  } else if (command == "camera-path") {
+    reader.expectCount(2, 2, "'camera-path FILE' (a camera path JSON file)");
+    step.kind = ScriptStep::Kind::CameraPath;
+    step.path = reader.words[1];
+    // Read and checked now, so a bad file stops the session before it
+    // starts; the cameras are made when the step runs, from the scene's.
+    try {
+      step.text = readInputFile(step.path, "camera path", kMaxTextInputBytes);
+      parseCameraPath(step.text, step.path, Camera{});
+    } catch (const InputError& error) {
+      reader.fail(std::string("a readable camera path file (") + error.what() + ")");
+    }
   } else {
     static const std::pair<const char*, ScriptStep::Kind> bare[] = {
         {"minimize", ScriptStep::Kind::Minimize},
@@ -114,7 +127,7 @@ ScriptStep parseLine(const LineReader& reader, const std::vector<std::string>& k
     }
     reader.fail(
         "a step: key, frames, drag, scroll, resize, minimize, restore, screenshot, "
-        "memory, wait-reference or quit");
+        "memory, wait-reference, camera-path or quit");
   }
   return step;
 }

@@ -10,6 +10,10 @@
 //   memory                 print resident memory (VmRSS) and the frame count
 //   wait-reference         draw frames until the split screen's traced
 //                          reference (key X) is ready and measured
+//   camera-path FILE       draw one frame per camera of a camera path file
+//                          (render --camera-path's format; fields a camera
+//                          leaves out keep the scene camera's); the camera
+//                          stays at the last one
 //   quit
 // '#' starts a comment. The session ends after the last step.
 #include <filesystem>
@@ -32,6 +36,7 @@ struct ScriptStep {
     Screenshot,
     Memory,
     WaitReference,
+    CameraPath,
     Quit
   };
   Kind kind = Kind::Quit;
@@ -41,7 +46,8 @@ struct ScriptStep {
   MouseButton button = MouseButton::Left;
   float scroll = 0.0f;
   uint32_t width = 0, height = 0;  // Resize
-  std::string path;                // Screenshot
+  std::string path;                // Screenshot, CameraPath
+  std::string text;                // CameraPath: the file, read and checked when parsed
   int line = 0;
 };
 

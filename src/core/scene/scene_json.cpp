@@ -107,7 +107,8 @@
 //               {"grid": {"count": [nx, ny, nz], "spacing": [x, y, z] or a number (default
 //               1)}} (centred on the object's origin), {"scatter": {"count": n, "seed": 1,
 //               "rectangle": [width, depth] (> 0: in the object's xz plane, centred), "scale":
-//               [min, max] (uniform per copy, default [1, 1])}} (std::mt19937: the same copies
+//               [min, max] (uniform per copy, default [1, 1]), "yaw": [min, max] (degrees about
+//               y, uniform per copy; default none)}} (std::mt19937: the same copies
 //               on every machine). Each copy's matrix is the object's times its own. At most
 //               262,144 (MAX_INSTANCES_PER_OBJECT) per object, 1,048,576 billboard copies
 //               and 65,536 mesh copies (MAX_MESH_INSTANCES_PER_SCENE) per scene. A mesh

@@ -1,6 +1,8 @@
 #include "core/scene/scene_json_billboards.h"
 
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <random>
 
 #include "core/scene/scene_json_transform.h"
@@ -71,10 +73,12 @@ float unitFloat(std::mt19937& random) {
 
 // `count` copies at uniformly random points of a width x depth rectangle in
 // the object's xz plane (centred on its origin), each scaled by a factor
-// uniform in [min, max]; the same seed gives the same copies everywhere
-// (std::mt19937 is specified bit for bit).
+// uniform in [min, max] and, with "yaw", turned about y by an angle uniform
+// in [min, max] degrees (from a generator of its own, so adding it moves no
+// copy); the same seed gives the same copies everywhere (std::mt19937 is
+// specified bit for bit).
 std::vector<glm::mat4> scatterInstances(const Field& field) {
-  field.expectObject({"count", "seed", "rectangle", "scale"});
+  field.expectObject({"count", "seed", "rectangle", "scale", "yaw"});
   uint32_t count = instanceCount(field.required(
       "count", "the number of copies (1.." + std::to_string(MAX_INSTANCES_PER_OBJECT) + ")"));
   uint32_t seed = 1;
@@ -94,14 +98,26 @@ std::vector<glm::mat4> scatterInstances(const Field& field) {
     maxScale = range[1].positive();
     if (minScale > maxScale) f->fail("min is above max", "[min, max] with 0 < min <= max");
   }
+  std::optional<glm::vec2> yaw;
+  if (auto f = field.optional("yaw")) {
+    std::vector<Field> range = f->elements("[min, max] degrees about y");
+    if (range.size() != 2) f->wrongType("[min, max] degrees about y");
+    yaw = glm::vec2(range[0].number(), range[1].number());
+    if (!(yaw->x <= yaw->y) || !(yaw->y - yaw->x <= 360.0f) || std::abs(yaw->x) > 360.0f)
+      f->fail("[" + formatNumber(yaw->x) + ", " + formatNumber(yaw->y) + "]",
+              "[min, max] degrees with -360 <= min <= max <= min + 360");
+  }
   std::mt19937 random(seed);
+  std::mt19937 turns(seed ^ 0x9e3779b9u);
   std::vector<glm::mat4> local;
   local.reserve(count);
   for (uint32_t i = 0; i < count; ++i) {
     float x = (unitFloat(random) - 0.5f) * width;
     float z = (unitFloat(random) - 0.5f) * depth;
     float scale = minScale + (maxScale - minScale) * unitFloat(random);
-    local.push_back(translation({x, 0.0f, z}) * scaling(glm::vec3(scale)));
+    glm::mat4 copy = translation({x, 0.0f, z}) * scaling(glm::vec3(scale));
+    if (yaw) copy = copy * rotationY(glm::radians(yaw->x + (yaw->y - yaw->x) * unitFloat(turns)));
+    local.push_back(copy);
   }
   return local;
 }
