@@ -116,6 +116,27 @@ TEST(FrustumCulling, TransformedBoundsAreTightAroundTheCorners) {
   }
 }
 
+// scaledShape describes what buildShape builds at a factor, for every kind
+// (the detail chain of a --tess F scene starts from it).
+TEST(LevelOfDetail, ScaledShapeBuildsWhatTheFactorBuilds) {
+  for (ShapeKind kind : {ShapeKind::Plane, ShapeKind::UvSphere, ShapeKind::Icosphere,
+                         ShapeKind::Torus, ShapeKind::Teapot, ShapeKind::Box}) {
+    ShapeDesc shape;
+    shape.kind = kind;
+    shape.tessellation = kind == ShapeKind::Icosphere ? 2 : 8;
+    for (float scale : {0.125f, 0.5f, 1.0f, 4.0f}) {
+      Mesh scaled = buildShape(shape, scale);
+      Mesh described = buildShape(scaledShape(shape, scale));
+      EXPECT_EQ(described.indices, scaled.indices) << shapeKindName(kind) << " x" << scale;
+      EXPECT_EQ(described.vertices.size(), scaled.vertices.size());
+    }
+  }
+  ShapeDesc sphere;
+  sphere.kind = ShapeKind::UvSphere;
+  sphere.tessellation = 32;
+  EXPECT_EQ(scaledShape(sphere, 4.0f).tessellation, 128u);
+}
+
 TEST(LevelOfDetail, ChordErrorSegmentsAreTheSmallestWithinTheBound) {
   for (float radius : {0.1f, 1.0f, 7.5f})
     for (float error : {0.0005f, 0.01f, 0.05f}) {

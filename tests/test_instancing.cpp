@@ -9,6 +9,7 @@
 
 #include "core/metrics/metrics.h"
 #include "core/scene/scene_json.h"
+#include "core/scene/shape.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {
@@ -123,6 +124,46 @@ TEST_F(GpuTest, InstanceCopiesAreCulledOneByOne) {
   EXPECT_LT(a.stats.triangles, b.stats.triangles);
   EXPECT_TRUE(sameFloats(a.image, b.image));
   EXPECT_TRUE(sameFloats(a.image, c.image));
+}
+
+// A --tess 4 scene's chain starts below its 4x meshes: a sphere of 32
+// slices built at 128, close enough to need more than 32 but not 128, is
+// drawn at 64 (without the chain's 64 and 32 it was drawn in full).
+TEST_F(GpuTest, RetessellatedShapesChainFromTheirFactor) {
+  Scene scene;
+  scene.camera.eye = {0.0f, 0.0f, 3.5f};
+  scene.lights.push_back(Light{});
+  ShapeDesc sphere;
+  sphere.kind = ShapeKind::UvSphere;
+  sphere.tessellation = 32;
+  scene.objects.push_back({"ball", scene.addShape(sphere), glm::mat4(1.0f), Material{}});
+  scene.retessellate(4.0f);
+  RenderSettings s{640, 360, ShadingModel::Phong};
+  s.lod = true;
+  RenderResult result = renderer().renderToImage(scene, s);
+  ShapeDesc expected = sphere;
+  expected.tessellation = 64;
+  EXPECT_EQ(result.stats.coarserDraws, 1u);
+  EXPECT_EQ(result.stats.triangles, buildShape(expected).triangleCount());
+}
+
+// A UV-projected copy of a mesh gets the mesh's levels too (its own
+// vertices, the mesh's triangles), so a far textured sphere with planar UVs
+// is drawn coarser, within the bound.
+TEST_F(GpuTest, UvProjectedCopiesHaveLevels) {
+  Scene scene = parseSceneJson(
+      R"({"camera": {"eye": [0, 0, 12], "at": [0, 0, 0]},
+          "lights": [{"type": "directional", "direction": [-1, -1, -1]}],
+          "objects": [{"shape": "sphere", "tessellation": 96,
+            "material": {"uv_mapping": "planar", "diffuse_map": {"procedural": "checker", "size": 64}}}]})",
+      "projected.json");
+  RenderSettings s{320, 180, ShadingModel::Phong};
+  RenderResult full = renderer().renderToImage(scene, s);
+  s.lod = true;
+  RenderResult levelled = renderer().renderToImage(scene, s);
+  EXPECT_EQ(levelled.stats.coarserDraws, 1u);
+  EXPECT_LT(levelled.stats.triangles * 4, full.stats.triangles);
+  EXPECT_LT(flipError(encodeSrgb8(full.image), encodeSrgb8(levelled.image)).mean, 0.01);
 }
 
 // On the built-in scene, with shadows, at 640x360: 0.5 px draws a small

@@ -94,12 +94,16 @@ void tessellateForView(Scene& scene, const ViewSize& view, float maxErrorPixels)
   std::vector<float> errors = toleratedObjectErrors(scene, view, maxErrorPixels);
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     ShapeDesc& shape = scene.shapes[i];
-    if (shape.kind == ShapeKind::Custom || std::isinf(errors[i])) continue;
-    uint32_t tessellation = tessellationFor(shape, errors[i]);
-    if (tessellation == shape.tessellation) continue;
+    if (shape.kind == ShapeKind::Custom) continue;
+    // A mesh no object draws (infinite error) keeps its tessellation.
+    uint32_t tessellation =
+        std::isinf(errors[i]) ? shape.tessellation : tessellationFor(shape, errors[i]);
+    // Built at the description itself (scale 1), also after a retessellate.
+    if (tessellation == shape.tessellation && scene.tessellationScale == 1.0f) continue;
     shape.tessellation = tessellation;
     scene.meshes[i] = buildShape(shape);
   }
+  scene.tessellationScale = 1.0f;
 }
 
 SimplifyStats simplifyForView(Scene& scene, const ViewSize& view, float maxErrorPixels) {

@@ -130,6 +130,7 @@ uint32_t Scene::addShape(const ShapeDesc& shape) {
 void Scene::retessellate(float scale) {
   for (size_t i = 0; i < meshes.size(); ++i)
     if (shapes[i].kind != ShapeKind::Custom) meshes[i] = buildShape(shapes[i], scale);
+  tessellationScale = scale;
 }
 
 Scene::Estimate Scene::estimate(float scale) const {

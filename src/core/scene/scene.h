@@ -221,6 +221,9 @@ struct Scene {
   std::vector<Object> objects;
   std::vector<Texture> textures;      // referenced by Material texture slots
   std::vector<Billboard> billboards;  // drawn by the billboard pass; the tracer ignores them
+  // The factor retessellate last built the procedural meshes at (1 after
+  // tessellateForView): their detail chains start from it (uploadScene).
+  float tessellationScale = 1.0f;
 
   uint32_t addMesh(Mesh mesh);  // a custom mesh (kept as is when re-tessellating)
   uint32_t addShape(const ShapeDesc& shape);

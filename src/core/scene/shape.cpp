@@ -46,6 +46,29 @@ Mesh buildExactShape(const ShapeDesc& shape, float scale) {
 
 }  // namespace
 
+ShapeDesc scaledShape(const ShapeDesc& shape, float scale) {
+  ShapeDesc scaledDesc = shape;
+  switch (shape.kind) {
+    case ShapeKind::Plane:
+    case ShapeKind::Teapot:
+      scaledDesc.tessellation = scaled(shape.tessellation, scale, 1);
+      break;
+    case ShapeKind::UvSphere:
+    case ShapeKind::Torus:
+      scaledDesc.tessellation = scaled(shape.tessellation, scale, 3);
+      break;
+    case ShapeKind::Icosphere: {
+      int extra = int(std::lround(std::log2(std::max(scale, 1e-3f))));
+      scaledDesc.tessellation = uint32_t(std::clamp(int(shape.tessellation) + extra, 0, 7));
+      break;
+    }
+    case ShapeKind::Box:
+    case ShapeKind::Custom:
+      break;
+  }
+  return scaledDesc;
+}
+
 Mesh buildShape(const ShapeDesc& shape, float scale) {
   Mesh mesh = buildExactShape(shape, scale);
   if (shape.creaseAngleDegrees >= 0.0f) computeCreaseNormals(mesh, shape.creaseAngleDegrees);

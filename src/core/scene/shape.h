@@ -31,6 +31,9 @@ struct ShapeDesc {
 // scale linearly; the icosphere level grows by log2(scale)). Custom shapes
 // have no description to rebuild from: the caller keeps their mesh.
 Mesh buildShape(const ShapeDesc& shape, float scale = 1.0f);
+// The description buildShape(..., 1) builds exactly as buildShape(shape,
+// scale): its tessellation scaled as buildShape scales it.
+ShapeDesc scaledShape(const ShapeDesc& shape, float scale);
 const char* shapeKindName(ShapeKind kind);
 
 // What buildShape(shape, scale) will make, computed without building it, so

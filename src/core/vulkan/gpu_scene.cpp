@@ -86,10 +86,21 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     return range;
   };
   // A loaded mesh's levels index its own vertices, after its full range; a
-  // procedural shape's are whole meshes of their own.
-  auto appendLevels = [&](const Mesh& mesh, const ShapeDesc& shape, DrawItem& range) {
+  // procedural shape's are whole meshes of their own. A UV-projected copy
+  // (`projection`) of a loaded mesh has the same vertices in the same order,
+  // so its levels are the mesh's (`meshLevels`) over the copy's vertices; a
+  // procedural shape's levels are projected like the copy.
+  auto appendLevels = [&](const Mesh& mesh, const ShapeDesc& shape, DrawItem& range,
+                          UvProjection projection = UvProjection::Mesh,
+                          const DrawItem* meshLevels = nullptr) {
     range.firstLevel = uint32_t(gpuScene.levels.size());
-    if (shape.kind == ShapeKind::Custom) {
+    if (shape.kind == ShapeKind::Custom && meshLevels) {
+      for (uint32_t i = 0; i < meshLevels->levelCount; ++i) {
+        DrawLevel level = gpuScene.levels[meshLevels->firstLevel + i];
+        level.vertexOffset = range.vertexOffset;
+        gpuScene.levels.push_back(level);
+      }
+    } else if (shape.kind == ShapeKind::Custom) {
       for (MeshLevel& level : simplifiedLevels(mesh)) {
         gpuScene.levels.push_back({uint32_t(indices.size()), uint32_t(level.indices.size()),
                                    range.vertexOffset, level.error});
@@ -98,6 +109,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     } else {
       for (const ShapeLevel& level : tessellationLevels(shape)) {
         Mesh coarser = buildShape(level.shape);
+        if (projection != UvProjection::Mesh) applyUvProjection(coarser, projection);
         if (!hasTangents(coarser)) computeTangents(coarser);
         DrawItem part = append(coarser);
         gpuScene.levels.push_back(
@@ -118,8 +130,9 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     } else {
       meshRanges.push_back(append(mesh));
     }
+    // A retessellated shape's chain starts below the tessellation it was built at.
     if (detailChains && m < scene.shapes.size())
-      appendLevels(mesh, scene.shapes[m], meshRanges.back());
+      appendLevels(mesh, scaledShape(scene.shapes[m], scene.tessellationScale), meshRanges.back());
   }
   // One projected copy per (mesh, projection) in use.
   std::map<std::pair<uint32_t, UvProjection>, DrawItem> projectedRanges;
@@ -129,7 +142,11 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
       continue;
     Mesh projected = scene.meshes[object.mesh];
     applyUvProjection(projected, projection);
-    projectedRanges[{object.mesh, projection}] = append(projected);
+    DrawItem range = append(projected);
+    if (detailChains && object.mesh < scene.shapes.size())
+      appendLevels(projected, scaledShape(scene.shapes[object.mesh], scene.tessellationScale),
+                   range, projection, &meshRanges[object.mesh]);
+    projectedRanges[{object.mesh, projection}] = range;
   }
   gpuScene.lights = lightLayoutOf(scene);
   gpuScene.vertices =
