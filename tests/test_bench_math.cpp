@@ -119,7 +119,8 @@ TEST(BenchCsv, WritesOneRowPerResultWithEveryMetric) {
   EXPECT_EQ(row[table.column("width", "out")], "64");
   EXPECT_EQ(row[table.column("height", "out")], "36");
   EXPECT_EQ(row[table.column("lights", "out")], "3");
-  EXPECT_EQ(table.columns.back(), "lights") << "a later column goes last";
+  EXPECT_EQ(row[table.column("lod_error_px", "out")], "0");
+  EXPECT_EQ(table.columns.back(), "flip_vs_lod_off") << "a later column goes last";
 }
 
 TEST(BenchAxes, SizesAndLightsAreAxesWithModelsVaryingFastest) {

@@ -890,7 +890,8 @@ const std::vector<std::string> kBenchColumns = {
     "shadow_size",   "triangles",      "frames",      "device_median_ms",
     "device_p95_ms", "wall_median_ms", "wall_p95_ms", "device_memory_mb",
     "peak_rss_mb",   "reference",      "rmse",        "psnr",
-    "ssim",          "flip",           "lights"};
+    "ssim",          "flip",           "lights",      "lod_error_px",
+    "coarser_draws", "flip_vs_lod_off"};
 
 TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   CommandResult r = run("bench default -o " + out("b") +
@@ -952,9 +953,9 @@ TEST_F(Cli, BenchSweepsShadowMethodsAndMapSizes) {
   EXPECT_EQ(rows[2][8], "256");
   EXPECT_EQ(rows[5][7], "pcf3");
   EXPECT_EQ(rows[5][8], "1024");
-  size_t flip = rows[0].size() - 2;
+  size_t flip = rows[0].size() - 5;
   ASSERT_EQ(rows[0][flip], "flip");
-  ASSERT_EQ(rows[0].back(), "lights");
+  ASSERT_EQ(rows[0][flip + 1], "lights");
   for (size_t i = 2; i < rows.size(); ++i)
     EXPECT_LT(std::stod(rows[i][flip]), std::stod(rows[1][flip])) << rows[i][7] << rows[i][8];
   CommandResult bad = run("bench -o " + out("t") + " --shadows soft");
@@ -978,21 +979,22 @@ TEST_F(Cli, BenchSweepsFrameSizesAndLightCounts) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   auto rows = csvRows(readText(out("sl/results.csv")));
   ASSERT_EQ(rows.size(), 1u + 2 * 2 * 2) << "header + sizes x light counts x models";
-  ASSERT_EQ(rows[0].back(), "lights");
+  const size_t lights = 22;
+  ASSERT_EQ(rows[0][lights], "lights");
   std::set<std::string> settings;  // "mode width lights", each once
   for (size_t i = 1; i < rows.size(); ++i) {
     EXPECT_EQ(rows[i][17], "none");
     EXPECT_EQ(rows[i][18], "") << "no error measured";
     EXPECT_EQ(rows[i][9], rows[1][9]) << "the same triangles at every size and light count";
     EXPECT_GT(std::stod(rows[i][11]), 0.0) << "a device time measured";
-    settings.insert(rows[i][3] + " " + rows[i][1] + "x" + rows[i][2] + " " + rows[i].back());
+    settings.insert(rows[i][3] + " " + rows[i][1] + "x" + rows[i][2] + " " + rows[i][lights]);
   }
   EXPECT_EQ(settings, (std::set<std::string>{"unlit 64x36 1", "phong 64x36 1", "unlit 64x36 8",
                                              "phong 64x36 8", "unlit 256x144 1", "phong 256x144 1",
                                              "unlit 256x144 8", "phong 256x144 8"}));
   EXPECT_EQ(rows[1][1], "64");
   EXPECT_EQ(rows[8][1], "256");
-  EXPECT_EQ(rows[8].back(), "8");
+  EXPECT_EQ(rows[8][lights], "8");
   EXPECT_EQ(pngSize(out("sl/scaling.png")), std::make_pair(1040u, 420u)) << "two panels";
   EXPECT_FALSE(std::filesystem::exists(out("sl/error_vs_time.png"))) << "no error, no error chart";
   EXPECT_FALSE(std::filesystem::exists(out("sl/error_vs_triangles.png")));
