@@ -867,9 +867,9 @@ TEST_F(Cli, StudyShadowEdgesMeasuresErrorAgainstMapSize) {
 TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   CommandResult r = run("study");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* name :
-       {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace", "bump-silhouette",
-        "shadow-bias", "shadow-edges", "shadow-grazing", "shadow-near"})
+  for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace",
+                           "bump-silhouette", "shadow-bias", "shadow-edges", "shadow-grazing",
+                           "shadow-near", "lod-popping", "billboard-failures"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 

@@ -278,16 +278,23 @@ TEST(LevelOfDetail, LevelChoiceKeepsTheBoundWithHysteresis) {
   EXPECT_EQ(chooseLevel(near, kNoLevel, 1.0f), 2u);
   // An error wobbling around the bound (an object at the switching
   // distance): at most one switch, whatever the order.
-  uint32_t level = kNoLevel, switches = 0;
-  for (int frame = 0; frame < 100; ++frame) {
-    float wobble = frame % 2 ? 1.02f : 0.98f;
-    const std::vector<float> projected{0.0f, 0.5f * wobble, 1.0f * wobble, 2.0f * wobble};
-    uint32_t next = chooseLevel(projected, level, 1.0f);
-    switches += level != kNoLevel && next != level;
-    level = next;
-  }
-  EXPECT_LE(switches, 1u);
+  // Without hysteresis (1) it switches on every frame but the first.
+  auto wobbleSwitches = [](float hysteresis, uint32_t& level) {
+    uint32_t switches = 0;
+    for (int frame = 0; frame < 100; ++frame) {
+      float wobble = frame % 2 ? 1.02f : 0.98f;
+      const std::vector<float> projected{0.0f, 0.5f * wobble, 1.0f * wobble, 2.0f * wobble};
+      uint32_t next = chooseLevel(projected, level, 1.0f, hysteresis);
+      switches += level != kNoLevel && next != level;
+      level = next;
+    }
+    return switches;
+  };
+  uint32_t level = kNoLevel;
+  EXPECT_LE(wobbleSwitches(kLodHysteresis, level), 1u);
   EXPECT_EQ(level, 1u);
+  level = kNoLevel;
+  EXPECT_EQ(wobbleSwitches(1.0f, level), 99u);
   // Any previous level, any rising errors: the chosen one is within the bound.
   std::mt19937 random(7);
   std::uniform_real_distribution<float> step(0.0f, 1.0f);

@@ -15,6 +15,8 @@ StudyResult runShadowBiasStudy(const StudyOptions& options, const StudyServices&
 StudyResult runShadowEdgesStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runShadowGrazingStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runShadowNearStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runLodPoppingStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runBillboardFailuresStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -56,6 +58,14 @@ const std::vector<Study>& studies() {
        "a caster crossing the point light's near plane: truly shadowed pixels drawn lit with the "
        "shadow pass's depth clamp and without it, against the tracer's exact shadow rays",
        320, 180, runShadowNearStudy},
+      {"lod-popping",
+       "levels of detail chosen every frame: switches and the jump they add between frames on a "
+       "dolly and on a camera oscillating about a switching distance, with hysteresis and without",
+       320, 180, runLodPoppingStudy},
+      {"billboard-failures",
+       "billboards: cylindrical coverage against the eye's elevation (edge-on from above) beside "
+       "spherical, and the ground cutting a sunk quad along the expected line",
+       320, 180, runBillboardFailuresStudy},
   };
   return table;
 }

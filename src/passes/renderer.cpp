@@ -515,7 +515,7 @@ void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
     for (uint32_t i = 0; i < draw.levelCount; ++i)
       projected.push_back(scene.levels[draw.firstLevel + i].error * pixels);
     uint32_t& drawn = drawnLevels_[uint32_t(draw.constants.object.x)];
-    drawn = chooseLevel(projected, drawn, settings_.lodErrorPixels);
+    drawn = chooseLevel(projected, drawn, settings_.lodErrorPixels, settings_.lodHysteresis);
     ++stats.levelDraws[std::min<size_t>(drawn, stats.levelDraws.size() - 1)];
     if (drawn == 0) continue;
     applyLevel(scene, draw, drawn);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/base/image.h"
+#include "core/scene/lod.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
 #include "core/vulkan/barriers.h"
@@ -90,6 +91,10 @@ struct FrameSettings {
   // the level the view drew it.
   bool lod = false;
   float lodErrorPixels = 0.5f;
+  // A coarser level only once its error is below this fraction of
+  // lodErrorPixels (0 < h <= 1); 1 turns the hysteresis off. Only study
+  // lod-popping changes it, to measure what the default saves.
+  float lodHysteresis = kLodHysteresis;
   // The visible copies of an "instances" block drawn as one instanced draw
   // per level (batchInstances); off draws them one by one, to show the
   // image is the same.

@@ -210,7 +210,8 @@ std::vector<ShapeLevel> tessellationLevels(const ShapeDesc& shape) {
   }
 }
 
-uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, float bound) {
+uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, float bound,
+                     float hysteresis) {
   auto coarsestWithin = [&](float limit) {
     uint32_t level = 0;
     for (uint32_t i = 1; i < projectedErrors.size(); ++i)
@@ -218,7 +219,7 @@ uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, 
     return level;
   };
   if (previous >= projectedErrors.size()) return coarsestWithin(bound);
-  uint32_t coarser = coarsestWithin(kLodHysteresis * bound);
+  uint32_t coarser = coarsestWithin(hysteresis * bound);
   if (projectedErrors[previous] <= bound && previous >= coarser) return previous;
   return previous < coarser ? coarser : coarsestWithin(bound);
 }

@@ -75,10 +75,12 @@ std::vector<ShapeLevel> tessellationLevels(const ShapeDesc& shape);
 // kNoLevel on the first) and the bound in pixels: never a level whose error
 // exceeds the bound; the coarsest within it on a first frame; afterwards
 // the previous level while it stays within the bound, and a coarser one only
-// once its error is below kLodHysteresis times the bound, so an object at
-// the threshold does not switch back and forth.
+// once its error is below `hysteresis` times the bound, so an object at the
+// threshold does not switch back and forth. A hysteresis of 1 switches as
+// soon as a level crosses the bound (study lod-popping measures both).
 constexpr uint32_t kNoLevel = ~0u;
 constexpr float kLodHysteresis = 0.75f;
-uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, float bound);
+uint32_t chooseLevel(std::span<const float> projectedErrors, uint32_t previous, float bound,
+                     float hysteresis = kLodHysteresis);
 
 }  // namespace shadelab
