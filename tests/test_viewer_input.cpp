@@ -169,6 +169,24 @@ TEST(ViewerScript, CameraPathIsReadWhenParsed) {
   EXPECT_NE(parseError("camera-path " + (dir / "none.json").string()).find("none.json"),
             std::string::npos);
   EXPECT_NE(parseError("camera-path").find("'camera-path FILE'"), std::string::npos);
+  // A path that is fine on its own but not with this scene's camera: its
+  // eye straight above the scene's look-at point, along the scene's up.
+  std::string above = (dir / "above.json").string();
+  std::ofstream(above) << R"([{"eye": [0, 10, -12]}])";
+  std::vector<ScriptStep> script =
+      parseViewerScriptText("frames 1\ncamera-path " + above + "\n", "s.txt", kKeys);
+  Camera scene;
+  scene.eye = {0.0f, 2.0f, 6.0f};
+  scene.at = {0.0f, 0.0f, -12.0f};
+  EXPECT_NO_THROW(checkScriptCameraPaths(script, "s.txt", Camera{}));
+  try {
+    checkScriptCameraPaths(script, "s.txt", scene);
+    ADD_FAILURE() << "the scene's camera makes the path's camera unusable";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("s.txt:2: 'camera-path " + above + "'"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 // Until a background trace is collected (no clock: it finishes when it does).

@@ -48,6 +48,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
+  if (viewer.script) checkScriptCameraPaths(*viewer.script, options.script, scene.camera);
   checkTriangleBudget(scene, viewer.tessellation, global.maxTriangles,
                       "--tess " + options.tessellation, "--max-triangles");
   printSceneWarnings(scene, true);

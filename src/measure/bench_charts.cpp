@@ -147,7 +147,8 @@ ImageU8 scalingChart(const std::vector<BenchResult>& results, const std::string&
   auto sameOtherwise = [&](const BenchResult& r, const Axis& free) {
     const BenchPoint& p = r.point;
     bool same = p.msaaSamples == first.msaaSamples && p.filter == first.filter &&
-                p.shadows == first.shadows && p.shadowMapSize == first.shadowMapSize;
+                p.shadows == first.shadows && p.shadowMapSize == first.shadowMapSize &&
+                p.lodError == first.lodError;
     for (const Axis& axis : axes)
       if (&axis != &free) same = same && axis.key(r) == axis.key(results.front());
     return same;
@@ -237,6 +238,7 @@ ImageU8 levelOfDetailChart(const std::vector<BenchResult>& results, const std::s
     else
       full[r.point.model] = &r;
   }
+  if (full.empty()) return {};  // nothing to measure the levels against
   for (auto& [model, members] : byModel) {
     std::sort(members.begin(), members.end(), [](const BenchResult* a, const BenchResult* b) {
       return a->point.lodError < b->point.lodError;

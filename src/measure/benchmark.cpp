@@ -163,14 +163,16 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
           errors += text;
         }
       }
-      char line[280];
+      char lod[24] = "";
+      if (point.lodError > 0.0f) std::snprintf(lod, sizeof lod, " lod %g px", point.lodError);
+      char line[300];
       std::snprintf(line, sizeof line,
-                    "round %u/%u  %-11s %ux%u lights %-5s tess %-5g msaa %u shadows %-9s median "
+                    "round %u/%u  %-11s %ux%u lights %-5s tess %-5g msaa %u shadows %-9s%s median "
                     "%.3f ms%s",
                     round + 1, options.rounds, std::string(shadingModelName(point.model)).c_str(),
                     point.width, point.height,
                     point.lights > 0 ? std::to_string(point.lights).c_str() : "scene",
-                    point.tessellation, point.msaaSamples, benchShadowName(point).c_str(),
+                    point.tessellation, point.msaaSamples, benchShadowName(point).c_str(), lod,
                     median({stats.deviceMs.begin() + long(warmup), stats.deviceMs.end()}),
                     errors.c_str());
       progress(line);

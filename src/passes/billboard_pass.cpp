@@ -207,8 +207,8 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     }
     // Cut-out copies front to back (the largest eye-space z is the nearest):
     // the depth test then rejects the fragments of the trees behind before
-    // their shading runs. In scatter order, 3,000 trees on `lod` cost ~45 ms
-    // of a 1280x720 frame, most of it shading fragments later hidden.
+    // their shading runs. In scatter order, the 3,000 trees of a first draft
+    // of `lod` cost ~46 ms of a 1280x720 frame, front to back ~28 ms.
     std::stable_sort(cutOut.begin(), cutOut.end(),
                      [](const auto& a, const auto& b) { return a.first > b.first; });
     for (const auto& [z, instance] : cutOut) out[result.instances++] = instance;

@@ -133,7 +133,15 @@ void Viewer::run() {
     // A script's frame is a presented one (an out-of-date swapchain is
     // rebuilt first), or an idle tick while minimised.
     bool presented = !minimized_ && drawFrame();
-    if (framesToRun_ > 0 && (presented || minimized_)) --framesToRun_;
+    if (framesToRun_ > 0 && (presented || minimized_)) {
+      --framesToRun_;
+      // A camera path's frame ticks by while minimised too, so the path ends
+      // with its frames and later steps see its last camera.
+      if (!presented && !pathCameras_.empty()) {
+        camera_.set(pathCameras_.front());
+        pathCameras_.pop_front();
+      }
+    }
     if (waitingForReference_) waitForReference();
   }
   RenderStats stats;
@@ -260,6 +268,8 @@ void Viewer::runStep(const ScriptStep& step) {
       break;
     case ScriptStep::Kind::CameraPath:
       pathCameras_.clear();
+      // Checked against this scene's camera before the window opened
+      // (checkScriptCameraPaths), so this does not throw.
       for (const Camera& camera : parseCameraPath(step.text, step.path, sceneCamera_))
         pathCameras_.push_back(camera);
       framesToRun_ = uint32_t(pathCameras_.size());

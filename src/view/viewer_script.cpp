@@ -164,4 +164,17 @@ std::vector<ScriptStep> parseViewerScript(const std::filesystem::path& path,
   return parseViewerScriptText(text, path.string(), keys);
 }
 
+void checkScriptCameraPaths(const std::vector<ScriptStep>& steps, const std::string& fileName,
+                            const Camera& sceneCamera) {
+  for (const ScriptStep& step : steps) {
+    if (step.kind != ScriptStep::Kind::CameraPath) continue;
+    try {
+      parseCameraPath(step.text, step.path, sceneCamera);
+    } catch (const InputError& error) {
+      throw InputError(fileName + ":" + std::to_string(step.line) + ": 'camera-path " + step.path +
+                       "' with this scene's camera: " + error.what());
+    }
+  }
+}
+
 }  // namespace shadelab

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "core/scene/scene.h"
 #include "view/window.h"
 
 namespace shadelab {
@@ -57,5 +58,10 @@ std::vector<ScriptStep> parseViewerScript(const std::filesystem::path& path,
                                           const std::vector<std::string>& keys);
 std::vector<ScriptStep> parseViewerScriptText(const std::string& text, const std::string& fileName,
                                               const std::vector<std::string>& keys);
+// The camera-path steps made into cameras from the scene's camera (fields a
+// path leaves out keep its values, which can make a camera unusable): throws
+// InputError naming the script file, the line and the path's problem.
+void checkScriptCameraPaths(const std::vector<ScriptStep>& steps, const std::string& fileName,
+                            const Camera& sceneCamera);
 
 }  // namespace shadelab

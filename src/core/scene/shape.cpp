@@ -14,29 +14,23 @@ uint32_t scaled(uint32_t base, float scale, uint32_t minimum) {
 }
 
 // The shape with the normals its construction gives (exact for procedural
-// surfaces, from the partial derivatives for Bezier patches).
-Mesh buildExactShape(const ShapeDesc& shape, float scale) {
+// surfaces, from the partial derivatives for Bezier patches), built at the
+// description's own tessellation (scaledShape applies a factor first).
+Mesh buildExactShape(const ShapeDesc& shape) {
   switch (shape.kind) {
     case ShapeKind::Plane:
-      return makePlane(shape.size, scaled(shape.tessellation, scale, 1));
+      return makePlane(shape.size, shape.tessellation);
     case ShapeKind::Box:
       return makeBox(shape.halfExtents);
-    case ShapeKind::UvSphere: {
-      uint32_t slices = scaled(shape.tessellation, scale, 3);
-      return makeUvSphere(shape.radius, slices, std::max(2u, slices / 2));
-    }
-    case ShapeKind::Icosphere: {
-      // Each level halves the edges: scale s adds log2(s) levels.
-      int extra = int(std::lround(std::log2(std::max(scale, 1e-3f))));
-      uint32_t level = uint32_t(std::clamp(int(shape.tessellation) + extra, 0, 7));
-      return makeIcosphere(shape.radius, level);
-    }
-    case ShapeKind::Torus: {
-      uint32_t major = scaled(shape.tessellation, scale, 3);
-      return makeTorus(shape.majorRadius, shape.minorRadius, major, std::max(3u, major / 2));
-    }
+    case ShapeKind::UvSphere:
+      return makeUvSphere(shape.radius, shape.tessellation, std::max(2u, shape.tessellation / 2));
+    case ShapeKind::Icosphere:
+      return makeIcosphere(shape.radius, shape.tessellation);
+    case ShapeKind::Torus:
+      return makeTorus(shape.majorRadius, shape.minorRadius, shape.tessellation,
+                       std::max(3u, shape.tessellation / 2));
     case ShapeKind::Teapot:
-      return tessellatePatches(utahTeapotPatches(), scaled(shape.tessellation, scale, 1));
+      return tessellatePatches(utahTeapotPatches(), shape.tessellation);
     case ShapeKind::Custom:
       break;
   }
@@ -46,6 +40,9 @@ Mesh buildExactShape(const ShapeDesc& shape, float scale) {
 
 }  // namespace
 
+// The one place a factor becomes a tessellation: segments per side scale
+// linearly (at least 1, or 3 around a circle), an icosphere gains log2 of
+// the factor in levels (0..7).
 ShapeDesc scaledShape(const ShapeDesc& shape, float scale) {
   ShapeDesc scaledDesc = shape;
   switch (shape.kind) {
@@ -70,7 +67,7 @@ ShapeDesc scaledShape(const ShapeDesc& shape, float scale) {
 }
 
 Mesh buildShape(const ShapeDesc& shape, float scale) {
-  Mesh mesh = buildExactShape(shape, scale);
+  Mesh mesh = buildExactShape(scaledShape(shape, scale));
   if (shape.creaseAngleDegrees >= 0.0f) computeCreaseNormals(mesh, shape.creaseAngleDegrees);
   return mesh;
 }
@@ -79,41 +76,33 @@ MeshSize estimateShape(const ShapeDesc& shape, float scale) {
   auto grid = [](uint64_t columns, uint64_t rows, uint64_t copies) {
     return MeshSize{copies * columns * rows * 2, copies * (columns + 1) * (rows + 1)};
   };
+  const uint64_t n = scaledShape(shape, scale).tessellation;  // what buildShape builds at
   MeshSize size;
   switch (shape.kind) {
-    case ShapeKind::Plane: {
-      uint64_t side = scaled(shape.tessellation, scale, 1);
-      size = grid(side, side, 1);
+    case ShapeKind::Plane:
+      size = grid(n, n, 1);
       break;
-    }
     case ShapeKind::Box:
       size = {12, 24};
       break;
     case ShapeKind::UvSphere: {
       // Rings of quads between the poles, a fan of triangles at each pole
       // (mesh_shapes.cpp makeUvSphere).
-      uint64_t slices = scaled(shape.tessellation, scale, 3);
-      uint64_t rings = std::max<uint64_t>(2, slices / 2) - 1;
-      size = {2 * slices * rings, 2 * slices + rings * (slices + 1)};
+      uint64_t rings = std::max<uint64_t>(2, n / 2) - 1;
+      size = {2 * n * rings, 2 * n + rings * (n + 1)};
       break;
     }
     case ShapeKind::Icosphere: {
-      int extra = int(std::lround(std::log2(std::max(scale, 1e-3f))));
-      uint64_t level = uint64_t(std::clamp(int(shape.tessellation) + extra, 0, 7));
-      uint64_t triangles = uint64_t(20) << (2 * level);
+      uint64_t triangles = uint64_t(20) << (2 * n);
       size = {triangles, triangles};  // shared vertices plus the seam's copies, rounded up
       break;
     }
-    case ShapeKind::Torus: {
-      uint64_t major = scaled(shape.tessellation, scale, 3);
-      size = grid(major, std::max<uint64_t>(3, major / 2), 1);
+    case ShapeKind::Torus:
+      size = grid(n, std::max<uint64_t>(3, n / 2), 1);
       break;
-    }
-    case ShapeKind::Teapot: {
-      uint64_t side = scaled(shape.tessellation, scale, 1);
-      size = grid(side, side, utahTeapotPatches().size());
+    case ShapeKind::Teapot:
+      size = grid(n, n, utahTeapotPatches().size());
       break;
-    }
     case ShapeKind::Custom:
       break;
   }

@@ -50,8 +50,12 @@ glm::vec2 projectUv(UvProjection projection, glm::vec3 p, glm::vec3 normal, cons
 }
 
 void applyUvProjection(Mesh& mesh, UvProjection projection) {
+  if (mesh.vertices.empty()) return;
+  applyUvProjection(mesh, projection, computeBounds(mesh));
+}
+
+void applyUvProjection(Mesh& mesh, UvProjection projection, const Bounds& bounds) {
   if (projection == UvProjection::Mesh || mesh.vertices.empty()) return;
-  Bounds bounds = computeBounds(mesh);
   for (Vertex& vertex : mesh.vertices)
     vertex.uv = projectUv(projection, vertex.position, vertex.normal, bounds);
   computeTangents(mesh);

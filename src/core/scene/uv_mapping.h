@@ -23,5 +23,8 @@ glm::vec2 projectUv(UvProjection projection, glm::vec3 position, glm::vec3 norma
 // Replaces every vertex's UV (UvProjection::Mesh keeps them) and recomputes
 // the tangents from the new UVs.
 void applyUvProjection(Mesh& mesh, UvProjection projection);
+// The same with the bounds given: a coarser level of detail is projected
+// with its full mesh's box, so its texture does not shift at a switch.
+void applyUvProjection(Mesh& mesh, UvProjection projection, const Bounds& bounds);
 
 }  // namespace shadelab

@@ -109,7 +109,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     } else {
       for (const ShapeLevel& level : tessellationLevels(shape)) {
         Mesh coarser = buildShape(level.shape);
-        if (projection != UvProjection::Mesh) applyUvProjection(coarser, projection);
+        if (projection != UvProjection::Mesh)
+          applyUvProjection(coarser, projection, computeBounds(mesh));
         if (!hasTangents(coarser)) computeTangents(coarser);
         DrawItem part = append(coarser);
         gpuScene.levels.push_back(
