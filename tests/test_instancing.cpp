@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/metrics/metrics.h"
+#include "core/scene/mesh.h"
 #include "core/scene/scene_json.h"
 #include "core/scene/shape.h"
 #include "gpu_test_support.h"
@@ -163,6 +164,42 @@ TEST_F(GpuTest, UvProjectedCopiesHaveLevels) {
   RenderResult levelled = renderer().renderToImage(scene, s);
   EXPECT_EQ(levelled.stats.coarserDraws, 1u);
   EXPECT_LT(levelled.stats.triangles * 4, full.stats.triangles);
+  EXPECT_LT(flipError(encodeSrgb8(full.image), encodeSrgb8(levelled.image)).mean, 0.01);
+}
+
+// A copy whose material was changed after loading (as C++ code may do) is
+// not merged with its group: drawn on its own, to the image the copies give
+// one by one.
+TEST_F(GpuTest, CopiesThatDifferAreDrawnOnTheirOwn) {
+  Scene scene = parseSceneJson(instancedTeapots(), "instanced.json");
+  scene.objects[4].material.kd = glm::vec3(0.1f, 0.7f, 0.2f);
+  RenderSettings s = settings(false);
+  RenderResult batched = renderer().renderToImage(scene, s);
+  s.instancing = false;
+  RenderResult oneByOne = renderer().renderToImage(scene, s);
+  EXPECT_EQ(batched.stats.drawCalls, 3u) << "the floor, the five alike, the green one";
+  EXPECT_TRUE(sameFloats(batched.image, oneByOne.image));
+}
+
+// A loaded (custom) mesh with projected UVs draws its simplified levels over
+// the projected copy's vertices.
+TEST_F(GpuTest, UvProjectedLoadedMeshesHaveLevels) {
+  Scene scene = parseSceneJson(
+      R"({"camera": {"eye": [0, 0, 12], "at": [0, 0, 0]},
+          "lights": [{"type": "directional", "direction": [-1, -1, -1]}],
+          "objects": [{"shape": "plane", "size": 0.01,
+            "material": {"diffuse_map": {"procedural": "checker", "size": 64}}}]})",
+      "custom.json");
+  Material material = scene.objects[0].material;
+  material.uvProjection = UvProjection::Planar;
+  scene.objects.push_back(
+      {"ball", scene.addMesh(makeUvSphere(1.0f, 96, 48)), glm::mat4(1.0f), material});
+  RenderSettings s{320, 180, ShadingModel::Phong};
+  RenderResult full = renderer().renderToImage(scene, s);
+  s.lod = true;
+  RenderResult levelled = renderer().renderToImage(scene, s);
+  EXPECT_EQ(levelled.stats.coarserDraws, 1u);
+  EXPECT_LT(levelled.stats.triangles * 2, full.stats.triangles);
   EXPECT_LT(flipError(encodeSrgb8(full.image), encodeSrgb8(levelled.image)).mean, 0.01);
 }
 

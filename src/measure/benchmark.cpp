@@ -119,10 +119,18 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
 
   std::vector<BenchResult> results(points.size());
   std::vector<std::vector<double>> device(points.size()), wall(points.size());
-  // With a level-of-detail axis, each point's first image, to measure the
-  // levels against the same setting drawn in full.
-  bool levels = std::any_of(points.begin(), points.end(),
-                            [](const BenchPoint& point) { return point.lodError > 0.0f; });
+  // With a level-of-detail axis, the first image of each point that has a
+  // twin at the other side (a bound and its setting at --lod off), to
+  // measure the levels against the same setting drawn in full.
+  std::vector<bool> keep(points.size(), false);
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (points[i].lodError == 0.0f) continue;
+    BenchPoint full = points[i];
+    full.lodError = 0.0f;
+    auto found = std::find(points.begin(), points.end(), full);
+    if (found != points.end()) keep[i] = keep[size_t(found - points.begin())] = true;
+  }
+  bool levels = std::find(keep.begin(), keep.end(), true) != keep.end();
   std::vector<ImageU8> images(levels ? points.size() : 0);
   for (uint32_t round = 0; round < options.rounds; ++round)
     for (size_t i = 0; i < points.size(); ++i) {
@@ -150,7 +158,7 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       result.triangles = stats.triangles;
       result.lights = uint32_t(scenes.at({point.tessellation, point.lights}).lights.size());
       result.coarserDraws = stats.coarserDraws;
-      if (round == 0 && levels) images[i] = encodeSrgb8(run.image);
+      if (round == 0 && keep[i]) images[i] = encodeSrgb8(run.image);
       std::string errors;
       // Output is deterministic, so the first round's image stands for all.
       if (round == 0 && measured) {
@@ -188,7 +196,7 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
     BenchPoint full = points[i];
     full.lodError = 0.0f;
     auto found = std::find(points.begin(), points.end(), full);
-    if (points[i].lodError > 0.0f && found != points.end())
+    if (points[i].lodError > 0.0f && found != points.end() && keep[i])
       results[i].flipAgainstFull =
           flipError(images[size_t(found - points.begin())], images[i]).mean;
   }

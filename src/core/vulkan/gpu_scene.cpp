@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <map>
 #include <tuple>
 
@@ -202,6 +203,23 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     gpuScene.bounds = i == 0 ? draw.worldBounds : unite(gpuScene.bounds, draw.worldBounds);
     gpuScene.draws.push_back(draw);
     gpuScene.triangles += draw.indexCount / 3;
+  }
+  // batchInstances merges a group's draws on their group and index range
+  // alone: a copy whose draw differs otherwise (code that edited one copy's
+  // material, say) is drawn on its own instead.
+  for (DrawItem& draw : gpuScene.draws) {
+    if (draw.instanceGroup == Object::kNotInstanced) continue;
+    const DrawItem& first = gpuScene.draws[draw.instanceGroup];
+    gpu::DrawConstants constants = draw.constants;
+    constants.object.x = first.constants.object.x;
+    bool same = std::memcmp(&constants, &first.constants, sizeof constants) == 0 &&
+                draw.firstIndex == first.firstIndex && draw.indexCount == first.indexCount &&
+                draw.vertexOffset == first.vertexOffset && draw.textured == first.textured &&
+                draw.material == first.material && draw.transparent == first.transparent &&
+                draw.castsShadows == first.castsShadows && draw.masked == first.masked &&
+                draw.hidden == first.hidden && draw.doubleSided == first.doubleSided &&
+                draw.firstLevel == first.firstLevel && draw.levelCount == first.levelCount;
+    if (!same) draw.instanceGroup = Object::kNotInstanced;
   }
   for (const Billboard& billboard : scene.billboards) {
     gpuScene.billboards.push_back(gpuBillboard(billboard));
