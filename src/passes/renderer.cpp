@@ -332,12 +332,16 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   ForwardFrame forward = forwardFrame(scene, settings);
   std::vector<ShadingModel> models = settings.splitModels;
   if (models.empty()) models.push_back(settings.shadingModel);
-  forward_.prepare(scene, models, forward, settings.wireframe);
-  if (forward.shadows != ShadowMethod::Off &&
-      shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
-    context_.waitIdle();  // no frame in flight may hold the descriptors being re-pointed
-    for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
+  if (forward.shadows != ShadowMethod::Off) {
+    if (shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
+      context_.waitIdle();  // no frame in flight may hold the descriptors being re-pointed
+      for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
+    }
+    // Its code compiles on the queue's thread while this one builds the
+    // forward pipelines (the first frame of `render default` waited for it).
+    shadow_.warmUp(settings.shadowDepthClamp);
   }
+  forward_.prepare(scene, models, forward, settings.wireframe);
   TargetLayout layout = forward.target;
   if (billboards) {
     bool blended = std::any_of(scene.billboards.begin(), scene.billboards.end(),

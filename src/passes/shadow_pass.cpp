@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cassert>
+#include <cstring>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/scene/frustum.h"
@@ -137,10 +138,96 @@ VkPipeline ShadowPass::pipeline(bool masked, bool depthClamp) {
   return slot;
 }
 
+ShadowPass::~ShadowPass() {
+  waitForWarmUp();
+}
+
+void ShadowPass::waitForWarmUp() {
+  if (!warmPending_) return;
+  VkFence fence = warmFence_;
+  VK_CHECK(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+  warmPending_ = false;
+}
+
+void ShadowPass::warmUp(bool depthClamp) {
+  if (warmed_ || !map_) return;
+  warmed_ = true;
+  waitForWarmUp();
+  VkDevice device = context_.device();
+  if (!warmPool_) {
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = context_.queueFamily();
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+    warmPool_ = CommandPool(device, pool);
+    VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocInfo.commandPool = pool;
+    allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocInfo.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(device, &allocInfo, &warmCmd_));
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
+    warmFence_ = Fence(device, fence);
+    // Three vertices at the origin: a triangle with no area, no fragment.
+    warmVertices_ = Buffer(context_, 3 * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                           MemoryUse::HostVisible);
+    std::memset(warmVertices_.mapped(), 0, 3 * sizeof(Vertex));
+  }
+  VkCommandBuffer cmd = warmCmd_;
+  VK_CHECK(vkResetCommandBuffer(cmd, 0));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::ShaderRead,
+               ImageUse::DepthAttachment);
+  VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};  // unused slot
+  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depth.imageView = layerViews_[0];
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  depth.clearValue.depthStencil = {1.0f, 0};
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, {1, 1}};
+  rendering.layerCount = 1;
+  rendering.colorAttachmentCount = 1;
+  rendering.pColorAttachments = &color;
+  rendering.pDepthAttachment = &depth;
+  vkCmdBeginRendering(cmd, &rendering);
+  VkViewport viewport{0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 1.0f};
+  VkRect2D scissor{{0, 0}, {1, 1}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline(false, depthClamp));
+  VkDeviceSize offset = 0;
+  VkBuffer vertexBuffer = warmVertices_.get();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+  glm::mat4 identity(1.0f);
+  vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(identity), &identity);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  vkCmdEndRendering(cmd);
+  imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::DepthAttachment,
+               ImageUse::ShaderRead);
+  VK_CHECK(vkEndCommandBuffer(cmd));
+  VkFence fence = warmFence_;
+  VK_CHECK(vkResetFences(device, 1, &fence));
+  VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmdInfo.commandBuffer = cmd;
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmdInfo;
+  VK_CHECK(vkQueueSubmit2(context_.queue(), 1, &submit, fence));
+  warmPending_ = true;
+}
+
 bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
   layers = std::max(layers, 1u);
   if (map_ && map_.desc().layers == layers && map_.desc().width == size) return false;
   if (map_) context_.waitIdle();  // frames in flight read the old map
+  waitForWarmUp();
+  warmed_ = false;
   layerViews_.clear();
   drawnFrom_.assign(layers, {});
   map_ = Image{};

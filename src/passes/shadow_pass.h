@@ -33,6 +33,16 @@ class ShadowPass {
   // stay the same; returns true when the image changed (re-point the
   // descriptors that read it). Waits for the device before replacing it.
   bool prepare(uint32_t layers, uint32_t size);
+  ~ShadowPass();
+  ShadowPass(const ShadowPass&) = delete;
+  ShadowPass& operator=(const ShadowPass&) = delete;
+  // Once per map, after prepare: one empty draw with the caster pipeline,
+  // submitted without waiting. llvmpipe compiles a pipeline's rasteriser
+  // code at its first draw (tens of ms, not kept in Mesa's disk cache); this
+  // way its queue thread compiles it while the host goes on building the
+  // forward pipelines, instead of at the first frame's shadow pass. Writes
+  // nothing a frame reads: every frame clears the layers it draws.
+  void warmUp(bool depthClamp);
   // Depth of every caster of `scene` into each layer, seen through
   // `worldToLightClip[layer]`; `casters` are scene.draws as this frame draws
   // them (--lod may have swapped in coarser index ranges, so a surface
@@ -68,6 +78,14 @@ class ShadowPass {
   Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
   Image map_;
   std::vector<ImageView> layerViews_;  // one per layer: the attachment of its pass
+  // warmUp's submission, kept until its fence signals.
+  void waitForWarmUp();
+  CommandPool warmPool_;
+  VkCommandBuffer warmCmd_ = VK_NULL_HANDLE;
+  Fence warmFence_;
+  Buffer warmVertices_;
+  bool warmPending_ = false;
+  bool warmed_ = false;  // the current map's pipeline has drawn once
   // Per layer, what it was last drawn from: the view matrix, then each
   // caster's draw index, model matrix and (masked) material set, as bits
   // (empty: never drawn).
