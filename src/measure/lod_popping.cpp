@@ -50,14 +50,8 @@ uint64_t chooseModelLevels(const LevelModel& model, const Camera& camera, uint32
   for (const DrawItem& draw : model.draws) {
     uint32_t indexCount = draw.indexCount;
     if (draw.levelCount > 0) {
-      float pixels =
-          pixelsPerUnitForSphere(view, centre(draw.worldBounds), boundingRadius(draw.worldBounds)) *
-          draw.objectScale;
-      projected.assign(1, 0.0f);
-      for (uint32_t i = 0; i < draw.levelCount; ++i)
-        projected.push_back(model.levels[draw.firstLevel + i].error * pixels);
       uint32_t& level = drawn[uint32_t(draw.constants.object.x)];
-      level = chooseLevel(projected, level, bound, hysteresis);
+      level = chooseDrawLevel(model.levels, draw, view, level, bound, hysteresis, projected);
       if (level > 0) indexCount = model.levels[draw.firstLevel + level - 1].indexCount;
     }
     triangles += indexCount / 3;

@@ -511,15 +511,9 @@ void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
   std::vector<float> projected;
   for (DrawItem& draw : draws) {
     if (draw.levelCount == 0) continue;
-    // Pixels per world unit at the nearest point of the object's box.
-    float pixels =
-        pixelsPerUnitForSphere(view, centre(draw.worldBounds), boundingRadius(draw.worldBounds)) *
-        draw.objectScale;
-    projected.assign(1, 0.0f);
-    for (uint32_t i = 0; i < draw.levelCount; ++i)
-      projected.push_back(scene.levels[draw.firstLevel + i].error * pixels);
     uint32_t& drawn = drawnLevels_[uint32_t(draw.constants.object.x)];
-    drawn = chooseLevel(projected, drawn, settings_.lodErrorPixels, settings_.lodHysteresis);
+    drawn = chooseDrawLevel(scene.levels, draw, view, drawn, settings_.lodErrorPixels,
+                            settings_.lodHysteresis, projected);
     ++stats.levelDraws[std::min<size_t>(drawn, stats.levelDraws.size() - 1)];
     if (drawn == 0) continue;
     applyLevel(scene, draw, drawn);

@@ -296,6 +296,19 @@ std::vector<DrawItem> visibleDraws(const GpuScene& scene, const glm::mat4& view,
   return draws;
 }
 
+uint32_t chooseDrawLevel(std::span<const DrawLevel> levels, const DrawItem& draw,
+                         const ViewSize& view, uint32_t previous, float bound, float hysteresis,
+                         std::vector<float>& projected) {
+  // Pixels per world unit at the nearest point of the object's box.
+  float pixels =
+      pixelsPerUnitForSphere(view, centre(draw.worldBounds), boundingRadius(draw.worldBounds)) *
+      draw.objectScale;
+  projected.assign(1, 0.0f);
+  for (uint32_t i = 0; i < draw.levelCount; ++i)
+    projected.push_back(levels[draw.firstLevel + i].error * pixels);
+  return chooseLevel(projected, previous, bound, hysteresis);
+}
+
 void batchInstances(std::vector<DrawItem>& draws, std::vector<gpu::ObjectData>& objects) {
   // A batch is keyed by its group and index range (the level drawn).
   using Key = std::tuple<uint32_t, uint32_t, int32_t>;

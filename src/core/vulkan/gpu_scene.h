@@ -4,8 +4,10 @@
 // the camera.
 #include <array>
 #include <compare>
+#include <span>
 #include <vector>
 
+#include "core/scene/lod.h"
 #include "core/scene/scene.h"
 #include "core/scene/shadows.h"
 #include "core/vulkan/resources.h"
@@ -57,6 +59,14 @@ struct DrawLevel {
   int32_t vertexOffset = 0;
   float error = 0.0f;
 };
+
+// --lod auto's choice for one draw with a chain (levels: GpuScene::levels):
+// each level's error projected to pixels at the nearest point of the draw's
+// box, then chooseLevel (core/scene/lod.h) from `previous` within `bound`
+// with `hysteresis`. `projected` is scratch space, kept between calls.
+uint32_t chooseDrawLevel(std::span<const DrawLevel> levels, const DrawItem& draw,
+                         const ViewSize& view, uint32_t previous, float bound, float hysteresis,
+                         std::vector<float>& projected);
 
 // One copy of a billboard, world space (Billboard::instances reduced to what
 // a quad that faces the viewer keeps of a matrix).
