@@ -65,22 +65,10 @@ Renderer::~Renderer() {
 
 void Renderer::createFrame(Frame& frame) {
   VkDevice device = context_.device();
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  poolInfo.queueFamilyIndex = context_.queueFamily();
-  VkCommandPool pool = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
-  frame.pool = CommandPool(device, pool);
-  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocInfo.commandPool = pool;
-  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocInfo.commandBufferCount = 1;
-  VK_CHECK(vkAllocateCommandBuffers(device, &allocInfo, &frame.cmd));
-
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
-  frame.fence = Fence(device, fence);
+  CommandBufferPool commands = createCommandBuffer(context_, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
+  frame.pool = std::move(commands.pool);
+  frame.cmd = commands.cmd;
+  frame.fence = createFence(device);
 
   VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;

@@ -154,28 +154,15 @@ void ShadowPass::warmUp(bool depthClamp) {
   warmed_ = true;
   waitForWarmUp();
   VkDevice device = context_.device();
-  if (!warmPool_) {
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = context_.queueFamily();
-    VkCommandPool pool = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
-    warmPool_ = CommandPool(device, pool);
-    VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocInfo.commandPool = pool;
-    allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocInfo.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(device, &allocInfo, &warmCmd_));
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VkFence fence = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
-    warmFence_ = Fence(device, fence);
+  if (!warmCommands_.pool) {
+    warmCommands_ = createCommandBuffer(context_, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
+    warmFence_ = createFence(device);
     // Three vertices at the origin: a triangle with no area, no fragment.
     warmVertices_ = Buffer(context_, 3 * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                            MemoryUse::HostVisible);
     std::memset(warmVertices_.mapped(), 0, 3 * sizeof(Vertex));
   }
-  VkCommandBuffer cmd = warmCmd_;
+  VkCommandBuffer cmd = warmCommands_.cmd;
   VK_CHECK(vkResetCommandBuffer(cmd, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

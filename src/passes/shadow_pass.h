@@ -80,8 +80,7 @@ class ShadowPass {
   std::vector<ImageView> layerViews_;  // one per layer: the attachment of its pass
   // warmUp's submission, kept until its fence signals.
   void waitForWarmUp();
-  CommandPool warmPool_;
-  VkCommandBuffer warmCmd_ = VK_NULL_HANDLE;
+  CommandBufferPool warmCommands_;
   Fence warmFence_;
   Buffer warmVertices_;
   bool warmPending_ = false;

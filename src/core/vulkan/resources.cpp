@@ -127,4 +127,27 @@ Buffer uploadBuffer(const Context& context, std::span<const std::byte> bytes,
   return buffer;
 }
 
+CommandBufferPool createCommandBuffer(const Context& context, VkCommandPoolCreateFlags flags) {
+  VkDevice device = context.device();
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = flags;
+  poolInfo.queueFamilyIndex = context.queueFamily();
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+  CommandBufferPool result{CommandPool(device, pool)};
+  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocInfo.commandPool = pool;
+  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocInfo.commandBufferCount = 1;
+  VK_CHECK(vkAllocateCommandBuffers(device, &allocInfo, &result.cmd));
+  return result;
+}
+
+Fence createFence(VkDevice device) {
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
+  return Fence(device, fence);
+}
+
 }  // namespace shadelab

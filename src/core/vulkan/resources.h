@@ -58,6 +58,15 @@ using QueryPool = DeviceHandle<VkQueryPool, vkDestroyQueryPool>;
 using BufferHandle = DeviceHandle<VkBuffer, vkDestroyBuffer>;
 using ImageHandle = DeviceHandle<VkImage, vkDestroyImage>;
 
+// A command pool on the context's queue family (`flags`: its create flags)
+// and one primary command buffer from it, freed with the pool.
+struct CommandBufferPool {
+  CommandPool pool;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+};
+CommandBufferPool createCommandBuffer(const Context& context, VkCommandPoolCreateFlags flags);
+Fence createFence(VkDevice device);  // unsignalled
+
 // Device memory that counts itself into deviceMemoryInUse() while it lives,
 // so the benchmark can report what each setting allocates.
 class DeviceMemory {
