@@ -40,10 +40,17 @@ void main() {
     material.ka *= diffuse;
     material.kd *= diffuse;
     vec3 normal = bumpMapped ? bumpedNormal(inNormal, inTangent, st) : inNormal;
+    // An impostor's texel lies off the quad by the height its atlas keeps
+    // (impostor_capture.frag): lit and shadowed there, where the surface is.
+    vec3 position = inPosition;
+    if (bumpMapped && int(draw.optics.x) == BILLBOARD_IMPOSTOR) {
+      float height = ((texture(normalMap, st).a * 255.0 - 1.0) / 254.0) * 2.0 - 1.0;
+      position += normalize(inNormal) * height * inTangent.w;
+    }
     // Seen from behind (a cylindrical quad from above its axis), the back
     // is lit as the front.
     if (!gl_FrontFacing) normal = -normal;
-    color = illuminate(inPosition, normal, material, shadingModel == SHADING_BLINN_PHONG);
+    color = illuminate(position, normal, material, shadingModel == SHADING_BLINN_PHONG);
   }
   outColor = vec4(color, alphaMask ? 1.0 : texel.a * draw.kd.w);
 }

@@ -8,7 +8,10 @@
 //   spherical    normal towards the eye point, right = up x normal: faces the
 //                viewer wherever it stands, tilting as the eye rises;
 //   cylindrical  up = its axis, right = axis x (towards the eye): turns about
-//                the axis only, so seen along the axis it is edge-on.
+//                the axis only, so seen along the axis it is edge-on;
+//   impostor     right and up as the host chose them: the axes of the atlas
+//                cell captured nearest the view direction (core/scene/
+//                impostor.h), so the quad lies where the captured image did.
 // optics.y: where the anchor sits on the quad's height (0 bottom, 0.5 centre).
 #extension GL_GOOGLE_include_directive : require
 #include "lighting.glsl"
@@ -44,6 +47,10 @@ void main() {
     vec3 r = cross(instance.up.xyz, normal);
     right = dot(r, r) > 1e-12 ? normalize(r) : anyPerpendicular(normal);
     up = cross(normal, right);
+  } else if (kind == BILLBOARD_IMPOSTOR) {
+    right = instance.right.xyz;
+    up = instance.up.xyz;
+    normal = cross(right, up);
   } else {
     up = instance.up.xyz;
     vec3 r = cross(up, -anchor);
@@ -59,6 +66,14 @@ void main() {
   outPosition = eye;
   outNormal = normal;
   outUv = corner;
-  outTangent = vec4(right, 1.0);
+  if (kind == BILLBOARD_IMPOSTOR) {
+    // The cell's square of the atlas; textureCoordinate flips v, row 0 on top.
+    int cells = int(draw.optics.z), cell = int(instance.right.w);
+    vec2 origin = vec2(float(cell % cells), float(cell / cells));
+    outUv = vec2((origin.x + corner.x) / float(cells), 1.0 - (origin.y + 1.0 - corner.y) / float(cells));
+  }
+  // w: the handedness (+1), or for an impostor its half size in eye units,
+  // which scales the heights its normal map's alpha holds (billboard.frag).
+  outTangent = vec4(right, kind == BILLBOARD_IMPOSTOR ? 0.5 * instance.centre.w : 1.0);
   gl_Position = frame.projection * vec4(eye, 1.0);
 }

@@ -44,8 +44,12 @@ using mat4 = glm::mat4;
 #define BILLBOARD_SCREEN 0       // parallel to the image plane
 #define BILLBOARD_SPHERICAL 1    // facing the eye point, its up kept near BillboardInstance::up
 #define BILLBOARD_CYLINDRICAL 2  // turning about BillboardInstance::up only
+// An object's impostor (core/scene/impostor.h): the quad lies across the
+// captured direction, its axes BillboardInstance::right and up, its texture
+// the atlas cell BillboardInstance::right.w of DrawConstants::optics.z per side.
+#define BILLBOARD_IMPOSTOR 3
 // The most instances one object may have, and a scene in all: each visible
-// one is 32 bytes per frame in flight; a million is ~1 s per frame on lavapipe.
+// one is 48 bytes per frame in flight; a million is ~1 s per frame on lavapipe.
 #define MAX_INSTANCES_PER_OBJECT 262144
 #define MAX_INSTANCES_PER_SCENE 1048576
 // Copies of meshes a scene may have in all: each is an object of its own on
@@ -179,6 +183,7 @@ struct DrawConstants {
 struct BillboardInstance {
   vec4 centre;  // xyz = the anchor point, eye space; w = the quad's width
   vec4 up;      // xyz = unit axis (cylindrical) or up (spherical), eye space; w = the height
+  vec4 right;   // impostors: xyz = the captured view's unit right, eye space; w = its atlas cell
 };
 
 // The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/scene/environment.cpp).

@@ -869,7 +869,7 @@ TEST_F(Cli, StudyWithoutNameListsTheStudies) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* name : {"zfight", "acne", "tir", "gouraud-highlight", "env-vs-trace",
                            "bump-silhouette", "shadow-bias", "shadow-edges", "shadow-grazing",
-                           "shadow-near", "lod-popping", "billboard-failures"})
+                           "shadow-near", "lod-popping", "billboard-failures", "impostor-parallax"})
     EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
 }
 

@@ -1,5 +1,6 @@
 // View-frustum culling's box test against brute force, box transforms, and
-// the level-of-detail formulas (chord error, projected size).
+// the level-of-detail formulas (chord error, projected size), and the
+// octahedral impostor's map.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <random>
 
 #include "core/scene/frustum.h"
+#include "core/scene/impostor.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene.h"
 #include "core/scene/shape.h"
@@ -334,6 +336,55 @@ TEST(LevelOfDetail, ShapeChainHalvesTessellationWithRisingErrors) {
   EXPECT_TRUE(tessellationLevels({.kind = ShapeKind::Box}).empty());
   EXPECT_TRUE(tessellationLevels({.kind = ShapeKind::Plane, .tessellation = 64}).empty());
   EXPECT_TRUE(tessellationLevels({.kind = ShapeKind::Custom}).empty());
+}
+
+// The octahedral map and its inverse agree over the sphere; every direction
+// falls in a cell whose direction is within the parallax angle of it, and
+// the angle shrinks as cells are added (about 1/cells).
+TEST(Impostor, OctahedralCellsCoverTheSphereWithinTheParallaxAngle) {
+  std::mt19937 random(7);
+  std::normal_distribution<float> normal;
+  for (uint32_t cells : {4u, 16u}) {
+    float angle = impostorParallaxAngle(cells);
+    for (int i = 0; i < 4000; ++i) {
+      glm::vec3 d = glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
+      glm::vec3 back = octahedralDecode(octahedralEncode(d));
+      ASSERT_NEAR(glm::length(back - d), 0.0f, 1e-5f) << d.x << "," << d.y << "," << d.z;
+      ImpostorCell cell = impostorCell(d, cells);
+      ASSERT_LT(cell.column, cells);
+      ASSERT_LT(cell.row, cells);
+      glm::vec3 captured = impostorCellDirection(cell, cells);
+      EXPECT_LE(std::acos(std::clamp(glm::dot(d, captured), -1.0f, 1.0f)), angle * 1.0001f);
+      // A cell's own direction falls in that cell.
+      ImpostorCell again = impostorCell(captured, cells);
+      EXPECT_EQ(again.index(cells), cell.index(cells));
+    }
+  }
+  float a4 = impostorParallaxAngle(4), a16 = impostorParallaxAngle(16);
+  std::printf("parallax angle: 4 cells %.2f deg, 16 cells %.2f deg\n", double(glm::degrees(a4)),
+              double(glm::degrees(a16)));
+  EXPECT_GT(a4, 3.0f * a16);
+  EXPECT_LT(a16, glm::radians(15.5f));
+  // The poles: +y encodes to the centre, -y to the corners; neither is a
+  // cell's direction, and every cell has a right-handed frame.
+  EXPECT_EQ(octahedralEncode(glm::vec3(0, 1, 0)), glm::vec2(0.0f));
+  EXPECT_EQ(glm::abs(octahedralEncode(glm::vec3(0, -1, 0))), glm::vec2(1.0f));
+  for (uint32_t index = 0; index < 16 * 16; ++index) {
+    glm::vec3 d = impostorCellDirection({index % 16, index / 16}, 16);
+    ImpostorFrame frame = impostorFrame(d);
+    EXPECT_NEAR(glm::dot(glm::cross(frame.right, frame.up), d), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(frame.right, d), 0.0f, 1e-5f);
+  }
+}
+
+// The error the chain ranks an impostor by: the parallax part radius *
+// sin(angle) plus half a texel, linear in the radius.
+TEST(Impostor, ErrorIsParallaxPlusHalfATexel) {
+  float r = 2.0f;
+  float expected = r * std::sin(impostorParallaxAngle(16)) + impostorHalfSize(r, 32) / 32.0f;
+  EXPECT_NEAR(impostorError(r, 16, 32), expected, 1e-5f);
+  EXPECT_NEAR(impostorError(2.0f * r, 16, 32), 2.0f * expected, 1e-5f);
+  EXPECT_GT(impostorHalfSize(r, 32), r);  // the margin
 }
 
 }  // namespace

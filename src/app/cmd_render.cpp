@@ -277,6 +277,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.srgb8 = !isLinearOutput(options.output);
     settings.lodErrorPixels = look.lodErrorPixels;
     settings.instancing = look.instancing;
+    settings.impostorCells = look.impostorCells;
     if (!cameras.empty())
       written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
     else
@@ -290,7 +291,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
   else
     writeImage(result.image, options.output);
   std::string levels = settings.lod ? ", " + std::to_string(result.stats.coarserDraws) +
-                                          " at a coarser level of detail"
+                                          " at a coarser level of detail (" +
+                                          std::to_string(result.stats.impostors) + " impostors)"
                                     : "";
   std::fprintf(out, "wrote %s (%ux%u, scene %s, %s, %llu triangles in %u draws, %u culled%s)\n",
                options.output.c_str(), size.width, size.height, scene.name.c_str(),

@@ -99,6 +99,13 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
                    "level of detail (on), or one draw each (off: the same image)")
       ->capture_default_str()
       ->check(CLI::IsMember({"on", "off"}));
+  command
+      ->add_option("--impostors", options.impostors,
+                   "With --lod auto, each opaque untextured mesh's chain ends in an impostor: a "
+                   "quad showing the mesh as captured from the nearest of 16x16 directions "
+                   "(on), or in its coarsest mesh (off)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
 }
 
 void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
@@ -112,6 +119,7 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
   settings.lod = options.lod == "auto";
   settings.lodErrorPixels = options.lodError;
   settings.instancing = options.instancing == "on";
+  settings.impostorCells = options.impostors == "on" ? kImpostorCells : 0;
 }
 
 float parseTessellationFactor(const std::string& text) {

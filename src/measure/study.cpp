@@ -17,6 +17,7 @@ StudyResult runShadowGrazingStudy(const StudyOptions& options, const StudyServic
 StudyResult runShadowNearStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runLodPoppingStudy(const StudyOptions& options, const StudyServices& services);
 StudyResult runBillboardFailuresStudy(const StudyOptions& options, const StudyServices& services);
+StudyResult runImpostorParallaxStudy(const StudyOptions& options, const StudyServices& services);
 
 const std::vector<Study>& studies() {
   static const std::vector<Study> table = {
@@ -66,6 +67,10 @@ const std::vector<Study>& studies() {
        "billboards: cylindrical coverage against the eye's elevation (edge-on from above) beside "
        "spherical, and the ground cutting a sunk quad along the expected line",
        320, 180, runBillboardFailuresStudy},
+      {"impostor-parallax",
+       "an octahedral impostor against its full mesh as the atlas's cells per side grow: the "
+       "bound the level-of-detail chain uses beside measured outline distance and FLIP",
+       320, 240, runImpostorParallaxStudy},
   };
   return table;
 }

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/scene/frustum.h"
+#include "core/scene/impostor.h"
 #include "core/vulkan/depth.h"
 #include "core/vulkan/shader.h"
 #include "core/vulkan/vk_check.h"
@@ -64,8 +65,8 @@ BillboardPass::BillboardPass(const Context& context, VkFormat colorFormat,
 void BillboardPass::upload(const GpuScene& scene) {
   // Every set written, even for a scene without billboards (lavapipe crashes
   // on a bound set with an unwritten descriptor).
-  VkDeviceSize bytes =
-      VkDeviceSize(std::max(1u, scene.billboardInstances)) * sizeof(gpu::BillboardInstance);
+  VkDeviceSize bytes = VkDeviceSize(std::max(1u, scene.billboardInstances + scene.impostorDraws)) *
+                       sizeof(gpu::BillboardInstance);
   for (uint32_t slot = 0; slot < kFrameSlots; ++slot) {
     if (instances_[slot] && instances_[slot].size() >= bytes) continue;
     instances_[slot] =
@@ -165,9 +166,29 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
                           depthFormat(key.target.depth), layout_});
 }
 
+gpu::BillboardInstance impostorInstance(const ImpostorAtlas& atlas, const glm::mat4& model,
+                                        const glm::mat4& view, glm::vec3 eyeWorld) {
+  // The view direction in mesh space picks the cell; the cell's frame, taken
+  // to eye space, lays the quad where its image was captured.
+  glm::vec3 eye(glm::inverse(model) * glm::vec4(eyeWorld, 1.0f));
+  glm::vec3 towards = eye - atlas.centre;
+  float length = glm::length(towards);
+  glm::vec3 direction = length > 0.0f ? towards / length : glm::vec3(0.0f, 0.0f, 1.0f);
+  ImpostorCell cell = impostorCell(direction, atlas.cells);
+  ImpostorFrame frame = impostorFrame(impostorCellDirection(cell, atlas.cells));
+  glm::mat4 modelView = view * model;
+  glm::vec3 right = glm::mat3(modelView) * frame.right;
+  glm::vec3 up = glm::mat3(modelView) * frame.up;
+  float width = 2.0f * atlas.halfSize * glm::length(right);
+  float height = 2.0f * atlas.halfSize * glm::length(up);
+  return {glm::vec4(glm::vec3(modelView * glm::vec4(atlas.centre, 1.0f)), width),
+          glm::vec4(glm::normalize(up), height),
+          glm::vec4(glm::normalize(right), float(cell.index(atlas.cells)))};
+}
+
 BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& scene,
                                            const glm::mat4& view, const glm::mat4& projection,
-                                           bool cull) {
+                                           bool cull, std::span<const ImpostorCopy> impostors) {
   assert(frameSlot < kFrameSlots && instances_[frameSlot]);
   BillboardFrame result;
   Frustum frustum = frustumFromMatrix(projection * view);
@@ -198,7 +219,7 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
       }
       gpu::BillboardInstance instance{
           glm::vec4(glm::vec3(view * glm::vec4(placement.position, 1.0f)), placement.size.x),
-          glm::vec4(up, placement.size.y)};
+          glm::vec4(up, placement.size.y), glm::vec4(0.0f)};
       float centreZ = instance.centre.z + rise.z * (0.5f - anchor) * placement.size.y;
       if (billboard.blended)
         blended.push_back({centreZ, b, instance});
@@ -214,6 +235,24 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     for (const auto& [z, instance] : cutOut) out[result.instances++] = instance;
     draw.instanceCount = uint32_t(cutOut.size());
     if (draw.instanceCount > 0) result.cutOut.push_back(draw);
+  }
+  // Impostors: culled with their objects already, and in the draws' front
+  // to back order, kept within each billboard.
+  std::vector<uint32_t> order(impostors.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return impostors[a].billboard < impostors[b].billboard;
+  });
+  glm::vec3 eyeWorld(glm::inverse(view)[3]);
+  for (size_t i = 0; i < order.size();) {
+    uint32_t b = impostors[order[i]].billboard;
+    BillboardDraw draw{b, result.instances, 0, 0.0f};
+    for (; i < order.size() && impostors[order[i]].billboard == b; ++i) {
+      out[result.instances++] =
+          impostorInstance(scene.billboards[b].impostor, impostors[order[i]].model, view, eyeWorld);
+      ++draw.instanceCount;
+    }
+    result.cutOut.push_back(draw);
   }
   // Back to front: eye space looks down -z. Ties keep scene order.
   std::stable_sort(blended.begin(), blended.end(),
@@ -255,7 +294,9 @@ void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel
                               nullptr);
     }
     gpu::DrawConstants constants = billboard.constants;
-    if (!frame.bump) constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
+    // --bump off drops bump maps, not an impostor's normals (its geometry).
+    if (!frame.bump && billboard.impostor.atlas < 0)
+      constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
     if (frame.mipTint) constants.object.y |= TEXTURE_MIP_TINT;
     bool bumped = (constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
     auto pipeline =

@@ -37,6 +37,19 @@ struct BillboardDraw {
   float depth = 0.0f;  // blended: the quad centre's eye-space z (the sort key)
 };
 
+// An object drawn as its impostor this frame (Renderer::chooseLevels):
+// GpuScene::billboards[billboard], placed by the object's model matrix.
+struct ImpostorCopy {
+  uint32_t billboard = 0;
+  glm::mat4 model{1.0f};
+};
+
+// An impostor copy's instance: the atlas cell nearest the direction from
+// the object to the eye (world space), its quad across that cell's
+// direction through the atlas centre, sized by the model matrix's scale.
+gpu::BillboardInstance impostorInstance(const ImpostorAtlas& atlas, const glm::mat4& model,
+                                        const glm::mat4& view, glm::vec3 eyeWorld);
+
 // What prepareFrame culled and laid out for one frame.
 struct BillboardFrame {
   std::vector<BillboardDraw> cutOut;   // one per alpha-tested billboard with visible instances
@@ -58,11 +71,12 @@ class BillboardPass {
                bool bumped);
   // Culls each instance's bounding sphere against the frustum (unless
   // `cull` is off), moves the survivors to eye space into `frameSlot`'s
-  // buffer (cut-out ones per billboard in scene order, then blended ones
-  // back to front) and says how to draw them. The slot's previous frame
-  // must be finished.
+  // buffer (cut-out ones per billboard in scene order, then `impostors`
+  // per impostor billboard, then blended ones back to front) and says how
+  // to draw them. The slot's previous frame must be finished.
   BillboardFrame prepareFrame(uint32_t frameSlot, const GpuScene& scene, const glm::mat4& view,
-                              const glm::mat4& projection, bool cull);
+                              const glm::mat4& projection, bool cull,
+                              std::span<const ImpostorCopy> impostors = {});
   // Records `draws` (of prepareFrame's, for this slot) inside an active
   // dynamic-rendering scope; adjacent draws of one billboard over adjacent
   // instances become one instanced draw.

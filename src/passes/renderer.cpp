@@ -43,6 +43,7 @@ Renderer::Renderer(const Context& context)
       shadow_(context, forward_.materialSetLayout()),
       billboards_(context, kColorFormat, forward_.descriptorSetLayout(),
                   forward_.materialSetLayout()),
+      impostors_(context),
       environmentBuilder_(context),
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kFramesInFlight},
@@ -273,6 +274,8 @@ GpuScene Renderer::upload(const Scene& scene, const SceneUploadOptions& options)
   ++uploadCount_;
   settingsApplied_ = false;  // the material sets and pipelines depend on the scene
   GpuScene gpuScene = uploadScene(context_, scene, options.detailChains);
+  if (options.detailChains)
+    impostors_.addImpostors(scene, gpuScene, options.impostorCells, kImpostorCellTexels);
   drawnLevels_.assign(scene.objects.size(), kNoLevel);
   textures_.upload(scene, gpuScene);
   billboards_.upload(gpuScene);
@@ -389,7 +392,9 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
   std::vector<DrawItem> draws = visibleDraws(scene, view, projection, settings.frustumCulling,
                                              settings.frontToBack, stats.culledDraws);
   stats.coarserDraws = 0;
-  if (settings.lod) chooseLevels(scene, source, draws, stats);
+  stats.impostors = 0;
+  std::vector<ImpostorCopy> impostors;
+  if (settings.lod) chooseLevels(scene, source, draws, impostors, stats);
   if (settings.instancing) batchInstances(draws, objects);
   ensureObjectCapacity(frame, uint32_t(objects.size()));
   stats.drawCalls = uint32_t(draws.size());
@@ -407,8 +412,8 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
     forwardFrame.materialSets = textures_.materialSets(settings.textures.filterOverride);
   BillboardFrame billboards;
   if (!scene.billboards.empty()) {
-    billboards =
-        billboards_.prepareFrame(frameSlot(), scene, view, projection, settings.frustumCulling);
+    billboards = billboards_.prepareFrame(frameSlot(), scene, view, projection,
+                                          settings.frustumCulling, impostors);
     stats.billboardInstances = billboards.instances;
     stats.culledInstances = billboards.culled;
     stats.triangles += 2 * uint64_t(billboards.instances);
@@ -492,7 +497,8 @@ void Renderer::recordTransparent(VkCommandBuffer cmd, ShadingModel model,
 }
 
 void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
-                            std::vector<DrawItem>& draws, RenderStats& stats) {
+                            std::vector<DrawItem>& draws, std::vector<ImpostorCopy>& impostors,
+                            RenderStats& stats) {
   double start = nowMs();
   stats.levelDraws.fill(0);
   ViewSize view{source.camera, settings_.width, settings_.height};
@@ -504,14 +510,28 @@ void Renderer::chooseLevels(const GpuScene& scene, const Scene& source,
                             settings_.lodHysteresis, projected);
     ++stats.levelDraws[std::min<size_t>(drawn, stats.levelDraws.size() - 1)];
     if (drawn == 0) continue;
-    applyLevel(scene, draw, drawn);
     ++stats.coarserDraws;
+    uint32_t impostor = scene.levels[draw.firstLevel + drawn - 1].impostor;
+    if (impostor != DrawLevel::kNoImpostor) {
+      uint32_t object = uint32_t(draw.constants.object.x);
+      impostors.push_back({impostor, source.objects[object].transform});
+      draw.indexCount = 0;  // leaves the list below
+      ++stats.impostors;
+      continue;
+    }
+    applyLevel(scene, draw, drawn);
   }
+  if (stats.impostors > 0)
+    draws.erase(std::remove_if(draws.begin(), draws.end(),
+                               [](const DrawItem& draw) { return draw.indexCount == 0; }),
+                draws.end());
   stats.lodSelectMs = nowMs() - start;
 }
 
 void Renderer::applyLevel(const GpuScene& scene, DrawItem& draw, uint32_t level) {
   if (level == 0 || level > draw.levelCount) return;  // kNoLevel too: in full
+  if (scene.levels[draw.firstLevel + level - 1].impostor != DrawLevel::kNoImpostor) --level;
+  if (level == 0) return;
   const DrawLevel& range = scene.levels[draw.firstLevel + level - 1];
   draw.firstIndex = range.firstIndex;
   draw.indexCount = range.indexCount;
@@ -609,8 +629,9 @@ void Renderer::reloadShaders(const std::map<std::string, std::vector<uint32_t>>&
 RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& settings) {
   if (settings.frames == 0) throw InputError("frames: expected at least 1");
   // A cube the settings would not draw is not built.
-  GpuScene gpuScene =
-      upload(scene, {.environmentCube = settings.environment, .detailChains = settings.lod});
+  GpuScene gpuScene = upload(scene, {.environmentCube = settings.environment,
+                                     .detailChains = settings.lod,
+                                     .impostorCells = settings.impostorCells});
   applyFrameSettings(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
@@ -637,8 +658,9 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
 RenderStats Renderer::renderSequence(const Scene& scene, const FrameSettings& settings,
                                      const std::vector<Camera>& cameras,
                                      const std::function<void(uint32_t, ImageRgba&&)>& onFrame) {
-  GpuScene gpuScene =
-      upload(scene, {.environmentCube = settings.environment, .detailChains = settings.lod});
+  GpuScene gpuScene = upload(scene, {.environmentCube = settings.environment,
+                                     .detailChains = settings.lod,
+                                     .impostorCells = settings.impostorCells});
   applyFrameSettings(gpuScene, settings);
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/base/image.h"
+#include "core/scene/impostor.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
@@ -20,6 +21,7 @@
 #include "passes/billboard_pass.h"
 #include "passes/environment_builder.h"
 #include "passes/forward_pass.h"
+#include "passes/impostor_capture.h"
 #include "passes/scene_textures.h"
 #include "passes/shadow_pass.h"
 #include "passes/skybox_pass.h"
@@ -36,6 +38,10 @@ struct SceneUploadOptions {
   // Build each loaded mesh's chain of simplified levels (FrameSettings::lod
   // draws from it; without a chain every object is drawn in full).
   bool detailChains = false;
+  // With detailChains: end each opaque, untextured chain in an impostor
+  // whose atlas has this many cells per side (passes/impostor_capture.h);
+  // 0: no impostors.
+  uint32_t impostorCells = kImpostorCells;
 };
 
 // How a frame is drawn. Renderer::applyFrameSettings validates them once,
@@ -95,6 +101,11 @@ struct FrameSettings {
   // lodErrorPixels (0 < h <= 1); 1 turns the hysteresis off. Only study
   // lod-popping changes it, to measure what the default saves.
   float lodHysteresis = kLodHysteresis;
+  // With lod: the cells per side of the impostor atlases the chains end in
+  // (SceneUploadOptions::impostorCells; 0: chains end in meshes). Like lod,
+  // read when the scene is uploaded: renderToImage and renderSequence pass
+  // it on, the viewer uploads with it.
+  uint32_t impostorCells = kImpostorCells;
   // The visible copies of an "instances" block drawn as one instanced draw
   // per level (batchInstances); off draws them one by one, to show the
   // image is the same.
@@ -124,6 +135,7 @@ struct RenderStats {
   uint32_t billboardInstances = 0;  // drawn per frame (after culling), in drawCalls' draws
   uint32_t culledInstances = 0;     // billboard instances outside the view frustum
   uint32_t coarserDraws = 0;        // --lod auto: draws at a simplified level, per frame
+  uint32_t impostors = 0;           // --lod auto: of those, objects drawn as their impostor
   // --lod auto, per frame: the objects (with a detail chain, in view) drawn
   // at each level, 0 in full, the last entry that level and every coarser
   // one; and the host time the choice took (Renderer::chooseLevels).
@@ -279,10 +291,12 @@ class Renderer {
                          const GpuScene& scene, std::span<const DrawItem> transparent,
                          const BillboardFrame& billboards, const glm::mat4& view,
                          const VkViewport& viewport) const;
-  // --lod auto: each draw's level for this frame, in place of its full range.
+  // --lod auto: each draw's level for this frame, in place of its full range;
+  // draws that chose their impostor leave `draws` for `impostors`.
   void chooseLevels(const GpuScene& scene, const Scene& source, std::vector<DrawItem>& draws,
-                    RenderStats& stats);
-  // Level `level` of the draw's chain in place of its range (0: in full).
+                    std::vector<ImpostorCopy>& impostors, RenderStats& stats);
+  // Level `level` of the draw's chain in place of its range (0: in full);
+  // for the impostor level, the coarsest mesh before it (what casts its shadow).
   static void applyLevel(const GpuScene& scene, DrawItem& draw, uint32_t level);
   void recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& scene, const Scene& source,
                      const glm::mat4& view, const glm::mat4& projection, RenderStats& stats);
@@ -293,6 +307,7 @@ class Renderer {
   SkyboxPass skybox_;
   ShadowPass shadow_;
   BillboardPass billboards_;
+  ImpostorCapture impostors_;
   EnvironmentBuilder environmentBuilder_;
   EnvironmentCube placeholderEnvironment_;
   EnvironmentCube sceneEnvironment_;    // empty when the scene has none or it is off

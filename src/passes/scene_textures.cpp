@@ -175,6 +175,7 @@ void SceneTextures::upload(const Scene& scene, GpuScene& gpuScene) {
   textures_.clear();
   std::vector<const Texture*> sources;
   for (const Texture& texture : scene.textures) sources.push_back(&texture);
+  for (const Texture& texture : gpuScene.impostorTextures) sources.push_back(&texture);
   textures_ = uploadTextures(context_, mips_, sources);
 
   // Objects whose materials use the same textures and samplers share a set.
@@ -192,8 +193,19 @@ void SceneTextures::upload(const Scene& scene, GpuScene& gpuScene) {
     if (draw.textured)
       draw.material = number(scene.objects[size_t(draw.constants.object.x)].material);
   // Billboards after the objects, so the objects' numbers are those they had before billboards.
-  for (size_t i = 0; i < gpuScene.billboards.size(); ++i)
+  for (size_t i = 0; i < scene.billboards.size(); ++i)
     gpuScene.billboards[i].material = number(scene.billboards[i].material);
+  // Impostors: the atlas's coverage as the diffuse map, its normals as the
+  // normal map, clamped at the edges, after the scene's own textures.
+  for (size_t i = scene.billboards.size(); i < gpuScene.billboards.size(); ++i) {
+    int32_t first = int32_t(scene.textures.size()) + 2 * gpuScene.billboards[i].impostor.atlas;
+    Material atlas;
+    atlas.diffuseMap.texture = first;
+    atlas.normalMap.texture = first + 1;
+    for (TextureSlot* slot : {&atlas.diffuseMap, &atlas.normalMap})
+      slot->sampler.wrapU = slot->sampler.wrapV = TextureWrap::ClampToEdge;
+    gpuScene.billboards[i].material = number(atlas);
+  }
   if (materials_.empty()) return;
   // Sized once for the scene: a set per material and filter choice.
   uint32_t maxSets = uint32_t(materials_.size() * kFilterChoices);

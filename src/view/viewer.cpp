@@ -170,7 +170,9 @@ void Viewer::run() {
 }
 
 void Viewer::uploadScene() {
-  gpuScene_ = renderer_.upload(scene_, {.environmentCube = true, .detailChains = settings_.lod});
+  gpuScene_ = renderer_.upload(scene_, {.environmentCube = true,
+                                        .detailChains = settings_.lod,
+                                        .impostorCells = settings_.impostorCells});
   renderer_.applyFrameSettings(gpuScene_, settings_);
 }
 
@@ -359,6 +361,7 @@ bool Viewer::drawFrame() {
   renderer_.recordScene(gpuScene_, scene_, counts);
   submittedTriangles_ = counts.triangles;
   coarserDraws_ = counts.coarserDraws;
+  impostors_ = counts.impostors;
   levelDraws_ = counts.levelDraws;
   if (settings_.lod) pushBounded(lodSelectMs_, {counts.lodSelectMs});
 

@@ -153,6 +153,7 @@ class Viewer {
   uint64_t framesDrawn_ = 0;
   uint64_t submittedTriangles_ = 0;       // last frame, after frustum culling, per view
   uint32_t coarserDraws_ = 0;             // last frame: draws at a simplified level (--lod)
+  uint32_t impostors_ = 0;                // last frame: of those, objects drawn as impostors
   std::array<uint32_t, 6> levelDraws_{};  // last frame: objects per level (--lod)
   std::deque<double> lodSelectMs_;        // host time choosing the levels, the last 120 frames
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;

@@ -269,11 +269,13 @@ OverlayText Viewer::overlayText() const {
   text.status.push_back("shadows " + std::string(nameOf(kShadowMethodNames, settings_.shadows)) +
                         ", " + std::to_string(settings_.shadowMapSize) +
                         "^2 maps: " + formatMs(median(shadowMs)) + " of the scene's device time");
-  text.status.push_back(
-      "triangles " + withThousands(submittedTriangles_ * views) + " submitted" +
-      (views > 1 ? " (" + std::to_string(views) + " views)" : "") + ", " +
-      withThousands(gpuScene_.triangles) + " in the scene" +
-      (settings_.lod ? "; lod " + std::to_string(coarserDraws_) + " draws simplified" : ""));
+  text.status.push_back("triangles " + withThousands(submittedTriangles_ * views) + " submitted" +
+                        (views > 1 ? " (" + std::to_string(views) + " views)" : "") + ", " +
+                        withThousands(gpuScene_.triangles) + " in the scene" +
+                        (settings_.lod
+                             ? "; lod " + std::to_string(coarserDraws_) + " draws simplified, " +
+                                   std::to_string(impostors_) + " as impostors"
+                             : ""));
   if (settings_.lod) {
     // Objects per level, 0 in full; the last entry also counts coarser ones.
     std::string levels;

@@ -52,12 +52,16 @@ struct DrawItem {
 
 // A coarser level of a mesh (core/scene/lod.h): a loaded mesh's simplified
 // index range over its own vertices, or a procedural shape rebuilt at a
-// lower tessellation with vertices of its own; its error in mesh units.
+// lower tessellation with vertices of its own; its error in mesh units. Or
+// the object's impostor (passes/impostor_capture.h), always the last level:
+// no indices, drawn by the billboard pass as GpuScene::billboards[impostor].
 struct DrawLevel {
   uint32_t firstIndex = 0;
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
   float error = 0.0f;
+  uint32_t impostor = kNoImpostor;
+  static constexpr uint32_t kNoImpostor = ~0u;
 };
 
 // --lod auto's choice for one draw with a chain (levels: GpuScene::levels):
@@ -75,8 +79,21 @@ struct BillboardPlacement {
   glm::vec2 size{1.0f};      // width, height
 };
 
+// An impostor billboard's atlas (core/scene/impostor.h): textures
+// GpuScene::impostorTextures[2 atlas] (coverage) and [2 atlas + 1] (normals),
+// captured around `centre` (mesh space), each cell seeing halfSize on either
+// side of it.
+struct ImpostorAtlas {
+  int32_t atlas = -1;  // -1: not an impostor
+  glm::vec3 centre{0.0f};
+  float halfSize = 0.0f;
+  uint32_t cells = 0;
+};
+
 // A billboard object as the billboard pass draws it: one instanced draw of
-// its placements that survive culling, moved to eye space every frame.
+// its placements that survive culling, moved to eye space every frame. An
+// impostor billboard has no placements of its own: its copies are the
+// objects that chose their impostor level this frame.
 struct GpuBillboard {
   // ka.w = alpha cut-off (alpha test), kd.w = opacity (1 - transparency),
   // object.y = TEXTURE_* flags, object.z = receives shadows, texturing as for
@@ -87,6 +104,7 @@ struct GpuBillboard {
   uint32_t material = 0;           // set 1 (passes/scene_textures), numbered at upload
   bool blended = false;            // alpha blend: sorted with the transparent draws
   std::vector<BillboardPlacement> instances;
+  ImpostorAtlas impostor;
 };
 GpuBillboard gpuBillboard(const Billboard& billboard);
 
@@ -124,8 +142,11 @@ struct GpuScene {
   // directional one), or -1 for a light without shadows.
   std::array<int32_t, MAX_LIGHTS> shadowFirstLayer{};
   uint32_t shadowLayers = 0;
-  std::vector<GpuBillboard> billboards;  // parallel to Scene::billboards
-  uint32_t billboardInstances = 0;       // summed over billboards
+  // Parallel to Scene::billboards, then the impostors' (passes/impostor_capture.h).
+  std::vector<GpuBillboard> billboards;
+  uint32_t billboardInstances = 0;        // summed over billboards
+  std::vector<Texture> impostorTextures;  // two per impostor atlas, uploaded by SceneTextures
+  uint32_t impostorDraws = 0;  // draws whose chain ends in an impostor: the most drawn at once
 };
 
 // Objects whose material asks for a UV projection draw a copy of their mesh

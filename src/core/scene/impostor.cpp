@@ -1,0 +1,83 @@
+#include "core/scene/impostor.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab {
+namespace {
+
+float signNotZero(float value) {
+  return value < 0.0f ? -1.0f : 1.0f;
+}
+
+}  // namespace
+
+glm::vec2 octahedralEncode(glm::vec3 direction) {
+  float l1 = std::abs(direction.x) + std::abs(direction.y) + std::abs(direction.z);
+  if (!(l1 > 0.0f)) return glm::vec2(0.0f);  // no direction (or NaN): the +y cell's corner
+  glm::vec2 point(direction.x / l1, direction.z / l1);
+  if (direction.y < 0.0f)
+    point = glm::vec2((1.0f - std::abs(point.y)) * signNotZero(point.x),
+                      (1.0f - std::abs(point.x)) * signNotZero(point.y));
+  return point;
+}
+
+glm::vec3 octahedralDecode(glm::vec2 point) {
+  glm::vec3 d(point.x, 1.0f - std::abs(point.x) - std::abs(point.y), point.y);
+  if (d.y < 0.0f) {
+    float x = (1.0f - std::abs(d.z)) * signNotZero(d.x);
+    float z = (1.0f - std::abs(d.x)) * signNotZero(d.z);
+    d.x = x;
+    d.z = z;
+  }
+  return glm::normalize(d);
+}
+
+ImpostorCell impostorCell(glm::vec3 direction, uint32_t cells) {
+  glm::vec2 point = octahedralEncode(direction);
+  auto index = [&](float coordinate) {
+    float cell = std::floor((coordinate + 1.0f) * 0.5f * float(cells));
+    return uint32_t(std::clamp(cell, 0.0f, float(cells - 1)));
+  };
+  return {index(point.x), index(point.y)};
+}
+
+glm::vec3 impostorCellDirection(ImpostorCell cell, uint32_t cells) {
+  auto centre = [&](uint32_t index) { return (float(index) + 0.5f) / float(cells) * 2.0f - 1.0f; };
+  return octahedralDecode(glm::vec2(centre(cell.column), centre(cell.row)));
+}
+
+ImpostorFrame impostorFrame(glm::vec3 direction) {
+  glm::vec3 right = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), direction);
+  // Only a direction along y has no frame; no cell of an even count has one.
+  right = glm::dot(right, right) > 1e-12f ? glm::normalize(right) : glm::vec3(1.0f, 0.0f, 0.0f);
+  return {right, glm::cross(direction, right)};
+}
+
+float impostorParallaxAngle(uint32_t cells) {
+  uint32_t samples = cells * 16;
+  float largest = 0.0f;
+  for (uint32_t j = 0; j <= samples; ++j)
+    for (uint32_t i = 0; i <= samples; ++i) {
+      glm::vec2 point(float(i) / float(samples) * 2.0f - 1.0f,
+                      float(j) / float(samples) * 2.0f - 1.0f);
+      glm::vec3 direction = octahedralDecode(point);
+      glm::vec3 captured = impostorCellDirection(impostorCell(direction, cells), cells);
+      float cosine = std::clamp(glm::dot(direction, captured), -1.0f, 1.0f);
+      largest = std::max(largest, std::acos(cosine));
+    }
+  return largest;
+}
+
+float impostorHalfSize(float radius, uint32_t cellTexels) {
+  uint32_t inner =
+      cellTexels > 2 * kImpostorCellMargin + 1 ? cellTexels - 2 * kImpostorCellMargin : cellTexels;
+  return radius * float(cellTexels) / float(inner);
+}
+
+float impostorError(float radius, uint32_t cells, uint32_t cellTexels) {
+  float texel = 2.0f * impostorHalfSize(radius, cellTexels) / float(cellTexels);
+  return radius * std::sin(impostorParallaxAngle(cells)) + 0.5f * texel;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,137 @@
+// Impostors on the device: the captured atlas of a sphere (each cell sees a
+// disc whose normals face the viewer at its centre), a golden of a teapot
+// drawn as its impostor with a must-fail twin, the impostor within its bound
+// of the full mesh in the built-in lod scene, and the parallax measurement
+// against the bound it is ranked by.
+#include <cmath>
+
+#include "core/metrics/metrics.h"
+#include "core/scene/impostor.h"
+#include "core/scene/scene_json.h"
+#include "core/scene/transform.h"
+#include "gpu_test_support.h"
+#include "measure/impostor_parallax.h"
+
+namespace shadelab::test {
+namespace {
+
+constexpr uint32_t kWidth = 320;
+constexpr uint32_t kHeight = 240;
+
+Scene impostorScene() {
+  return loadSceneJson(std::string(SHADELAB_TEST_DATA_DIR) + "/impostor.json");
+}
+
+// The teapot as its impostor: a bound far above the impostor's error.
+RenderSettings impostorSettings() {
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
+  settings.lod = true;
+  settings.lodErrorPixels = 100.0f;
+  return settings;
+}
+
+using ImpostorTest = GpuTest;
+
+TEST_F(ImpostorTest, SphereAtlasSeesAFacingDiscInEveryCell) {
+  Scene scene;
+  ShapeDesc sphere;
+  sphere.kind = ShapeKind::UvSphere;
+  sphere.radius = 1.0f;
+  sphere.tessellation = 48;
+  Object object;
+  object.mesh = scene.addShape(sphere);
+  scene.objects.push_back(object);
+  GpuScene gpu = renderer().upload(scene, {.environmentCube = false, .detailChains = true});
+  ASSERT_EQ(gpu.impostorTextures.size(), 2u);
+  ASSERT_EQ(gpu.impostorDraws, 1u);
+  const Texture& coverage = gpu.impostorTextures[0];
+  const Texture& normals = gpu.impostorTextures[1];
+  const uint32_t cells = kImpostorCells, texels = kImpostorCellTexels;
+  ASSERT_EQ(coverage.width, cells * texels);
+  // The disc's radius in texels: the sphere's radius over the cell's half size.
+  double discRadius = 0.5 * texels / impostorHalfSize(1.0f, texels);
+  for (uint32_t row = 0; row < cells; ++row)
+    for (uint32_t column = 0; column < cells; ++column) {
+      SCOPED_TRACE(testing::Message() << "cell " << column << "," << row);
+      uint32_t covered = 0;
+      for (uint32_t y = 0; y < texels; ++y)
+        for (uint32_t x = 0; x < texels; ++x)
+          covered +=
+              coverage
+                  .rgba8[4 * ((size_t(row * texels + y) * coverage.width) + column * texels + x) +
+                         3] == 255;
+      double area = M_PI * discRadius * discRadius;
+      EXPECT_NEAR(double(covered), area, 0.08 * area);
+      // At the centre the sphere faces the viewer: normal (0, 0, 1), and its
+      // height above the quad is the radius.
+      size_t centre =
+          4 * ((size_t(row * texels + texels / 2) * normals.width) + column * texels + texels / 2);
+      EXPECT_NEAR(normals.rgba8[centre + 0], 128, 8);
+      EXPECT_NEAR(normals.rgba8[centre + 1], 128, 8);
+      EXPECT_GE(normals.rgba8[centre + 2], 250);
+      double height = 1.0 / impostorHalfSize(1.0f, texels);
+      EXPECT_NEAR(normals.rgba8[centre + 3], 1.0 + 254.0 * (0.5 + 0.5 * height), 3.0);
+      // The corners of a cell are its margin: nothing covers them.
+      EXPECT_EQ(coverage.rgba8[4 * ((size_t(row * texels) * coverage.width) + column * texels) + 3],
+                0);
+    }
+}
+
+TEST_F(ImpostorTest, TeapotImpostorMatchesGolden) {
+  RenderResult result = renderer().renderToImage(impostorScene(), impostorSettings());
+  EXPECT_EQ(result.stats.impostors, 1u);
+  EXPECT_TRUE(matchesGolden("impostor-teapot", encodeSrgb8(result.image)));
+}
+
+// Must-fail twin: the teapot turned by 70 degrees is drawn from other cells
+// of the same atlas; the golden must reject it (as it would a cell chosen
+// for the wrong direction).
+TEST_F(ImpostorTest, GoldenRejectsTheTeapotSeenFromAnotherCell) {
+  Scene scene = impostorScene();
+  scene.objects[1].transform = rotationY(glm::radians(70.0f));
+  RenderResult result = renderer().renderToImage(scene, impostorSettings());
+  EXPECT_EQ(result.stats.impostors, 1u);
+  EXPECT_FALSE(matchesImage(loadGolden("impostor-teapot"), encodeSrgb8(result.image)));
+}
+
+// The lod scene at a 4 px bound: some teapots and tori far enough away are
+// drawn as impostors, and the image stays close to the one drawn in full.
+TEST_F(ImpostorTest, LodSceneImpostorsStayCloseToTheFullMeshes) {
+  Scene scene = builtinScene("lod");
+  RenderSettings settings{640, 360, ShadingModel::Phong};
+  RenderResult full = renderer().renderToImage(scene, settings);
+  settings.lod = true;
+  settings.lodErrorPixels = 4.0f;
+  RenderResult withImpostors = renderer().renderToImage(scene, settings);
+  settings.impostorCells = 0;
+  RenderResult without = renderer().renderToImage(scene, settings);
+  ImageU8 reference = encodeSrgb8(full.image);
+  double flipWith = flipError(reference, encodeSrgb8(withImpostors.image)).mean;
+  double flipWithout = flipError(reference, encodeSrgb8(without.image)).mean;
+  std::printf("lod scene at 4 px: %u impostors, mean FLIP %.4f (meshes only: %.4f)\n",
+              withImpostors.stats.impostors, flipWith, flipWithout);
+  EXPECT_GT(withImpostors.stats.impostors, 5u);
+  EXPECT_EQ(without.stats.impostors, 0u);
+  EXPECT_LT(withImpostors.stats.triangles, without.stats.triangles);
+  EXPECT_LT(flipWith, 0.02);
+}
+
+// The impostor is ranked by impostorError: the outline of the impostor is
+// on average within that bound of the mesh's, and more cells bring it closer.
+TEST_F(ImpostorTest, ParallaxStaysWithinTheBoundAndShrinksWithMoreCells) {
+  std::vector<ImpostorParallax> results =
+      measureImpostorParallax(renderer(), {4, 16}, 12, kWidth, kHeight);
+  ASSERT_EQ(results.size(), 2u);
+  for (const ImpostorParallax& r : results) {
+    std::printf("%u cells: bound %.2f px, outline mean %.2f max %.2f px, FLIP %.4f\n", r.cells,
+                r.boundPixels, r.meanOutlinePixels, r.maxOutlinePixels, r.meanFlip);
+    EXPECT_TRUE(r.allImpostors);
+    EXPECT_LT(r.meanOutlinePixels, r.boundPixels);
+    EXPECT_GT(r.meanOutlinePixels, 0.0);  // an impostor is not the mesh
+  }
+  EXPECT_LT(results[1].meanOutlinePixels, results[0].meanOutlinePixels);
+  EXPECT_LT(results[1].meanFlip, results[0].meanFlip);
+}
+
+}  // namespace
+}  // namespace shadelab::test
