@@ -308,6 +308,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
                          {"draw_calls", result.stats.drawCalls},
                          {"culled_draws", result.stats.culledDraws},
                          {"coarser_draws", result.stats.coarserDraws},
+                         {"impostors", result.stats.impostors},
                          {"device_memory_bytes", result.stats.deviceMemoryBytes},
                          {"outputs", {{"image", jsonPath(options.output)}}}};
   json["settings"]["frames"] = settings.frames;

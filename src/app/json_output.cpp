@@ -79,6 +79,7 @@ nlohmann::json toJson(const FrameSettings& settings) {
       {"shadow_map_size", settings.shadowMapSize},
       {"shadow_cache", settings.keepShadowMaps},
       {"lod", settings.lod ? nlohmann::json(settings.lodErrorPixels) : nlohmann::json("off")},
+      {"impostor_cells", settings.impostorCells},
       {"shadow_bias",
        {{"constant", settings.shadowBias.constant},
         {"slope", settings.shadowBias.slope},

@@ -35,12 +35,12 @@ StudyResult runImpostorParallaxStudy(const StudyOptions& options, const StudySer
          "outline_pixels_max,flip_mean,views,impostor_drawn\n";
   Chart chart;
   chart.title = "Impostor against the full mesh";
-  chart.subtitle = "one teapot, 24 views; line: the bound the LOD chain uses";
+  chart.subtitle = "one teapot, 24 views; bound: impostorError, what the LOD chain uses";
   chart.x = {"atlas cells per side", AxisScale::Log, 4.0, 32.0};
   chart.y = {"pixels", AxisScale::Log, 0.1, 100.0};
-  ChartSeries bound{"bound (impostorError)", chartColor(0), {}, true, Marker::None};
-  ChartSeries mean{"outline distance, mean", chartColor(1), {}, true, Marker::Dot};
-  ChartSeries worst{"outline distance, worst view", chartColor(2), {}, true, Marker::Dot};
+  ChartSeries bound{"bound", chartColor(0), {}, true, Marker::None};
+  ChartSeries mean{"outline, mean", chartColor(1), {}, true, Marker::Dot};
+  ChartSeries worst{"outline, worst", chartColor(2), {}, true, Marker::Dot};
   std::vector<SheetCell> pairs;
   for (const ImpostorParallax& r : results) {
     char line[200];
@@ -63,7 +63,7 @@ StudyResult runImpostorParallaxStudy(const StudyOptions& options, const StudySer
   }
   chart.series = {bound, mean, worst};
   writeTextFile(options.output / "impostor_parallax.csv", csv.str());
-  writeImage(drawChartRow({chart}, 680, 340), options.output / "impostor_parallax.png");
+  writeImage(drawChartRow({chart}, 560, 340), options.output / "impostor_parallax.png");
   writeImage(composeSheet({pairs}), options.output / "impostor_views.png");
   result.files = {"impostor_parallax.csv", "impostor_parallax.png", "impostor_views.png"};
   return result;

@@ -48,6 +48,42 @@ glm::mat4 cellToClip(glm::vec3 centre, float radius, float halfSize, glm::vec3 d
   return m;
 }
 
+// Uncovered texels (alpha 0) take the mean normal and height of their
+// covered 8-neighbours, ring by ring out to the cell's edge, within each
+// cell: the mip levels of a far impostor then average its own normals
+// rather than the clear's (a normal facing the captured viewer, which
+// lit the silhouettes of far copies brighter, cell by cell).
+void dilateIntoMargins(Texture& normals, uint32_t cellTexels, uint32_t cells) {
+  uint32_t side = cellTexels * cells;
+  std::vector<uint8_t> next = normals.rgba8;
+  for (uint32_t ring = 0; ring < cellTexels; ++ring) {
+    bool changed = false;
+    for (uint32_t y = 0; y < side; ++y)
+      for (uint32_t x = 0; x < side; ++x) {
+        size_t at = 4 * (size_t(y) * side + x);
+        if (normals.rgba8[at + 3] != 0) continue;
+        uint32_t cellX = x / cellTexels * cellTexels, cellY = y / cellTexels * cellTexels;
+        uint32_t sum[4] = {0, 0, 0, 0}, count = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            int nx = int(x) + dx, ny = int(y) + dy;
+            if (nx < int(cellX) || ny < int(cellY) || nx >= int(cellX + cellTexels) ||
+                ny >= int(cellY + cellTexels))
+              continue;
+            const uint8_t* neighbour = &normals.rgba8[4 * (size_t(ny) * side + size_t(nx))];
+            if (neighbour[3] == 0) continue;
+            for (int c = 0; c < 4; ++c) sum[c] += neighbour[c];
+            ++count;
+          }
+        if (count == 0) continue;
+        for (int c = 0; c < 4; ++c) next[at + c] = uint8_t((sum[c] + count / 2) / count);
+        changed = true;
+      }
+    normals.rgba8 = next;
+    if (!changed) break;
+  }
+}
+
 }  // namespace
 
 ImpostorCapture::ImpostorCapture(const Context& context) : context_(context) {
@@ -196,6 +232,7 @@ ImpostorTextures ImpostorCapture::capture(const GpuScene& scene, const DrawItem&
     coverage[3] = texel[3] > 0 ? 255 : 0;
     std::memcpy(normal, texel, 4);
   }
+  dilateIntoMargins(out.normals, side / cells, cells);
   return out;
 }
 

@@ -21,7 +21,9 @@ namespace shadelab {
 struct ImpostorTextures {
   Texture coverage;  // sRGB white, alpha 255 where the mesh covers the texel, else 0
   // Linear, rgb = (n + 1) / 2 in the cell's frame; a = the surface's height
-  // h above the quad, (1 + 254 (0.5 + 0.5 h / halfSize)) / 255, 0 uncovered.
+  // h above the quad, (1 + 254 (0.5 + 0.5 h / halfSize)) / 255; uncovered
+  // texels repeat their covered neighbours' (dilated ring by ring within
+  // the cell), so mip levels average the mesh's normals, not the clear.
   Texture normals;
 };
 
