@@ -61,16 +61,21 @@ TEST_F(ImpostorTest, SphereAtlasSeesAFacingDiscInEveryCell) {
                   .rgba8[4 * ((size_t(row * texels + y) * coverage.width) + column * texels + x) +
                          3] == 255;
       double area = M_PI * discRadius * discRadius;
-      EXPECT_NEAR(double(covered), area, 0.08 * area);
+      // The captured level may lie up to half a texel inside the sphere (7% of
+      // the disc's area at 14 texels of radius).
+      EXPECT_NEAR(double(covered), area, 0.12 * area);
       // At the centre the sphere faces the viewer: normal (0, 0, 1), and its
-      // height above the quad is the radius.
+      // height above the quad is the radius, less the chord error of the
+      // level captured (up to half a texel: 254 / 2 / 32 codes), plus rounding.
       size_t centre =
           4 * ((size_t(row * texels + texels / 2) * normals.width) + column * texels + texels / 2);
       EXPECT_NEAR(normals.rgba8[centre + 0], 128, 8);
       EXPECT_NEAR(normals.rgba8[centre + 1], 128, 8);
       EXPECT_GE(normals.rgba8[centre + 2], 250);
       double height = 1.0 / impostorHalfSize(1.0f, texels);
-      EXPECT_NEAR(normals.rgba8[centre + 3], 1.0 + 254.0 * (0.5 + 0.5 * height), 3.0);
+      double halfTexel = 1.0 / texels;  // a texel is 2 halfSize / texels
+      EXPECT_NEAR(normals.rgba8[centre + 3], 1.0 + 254.0 * (0.5 + 0.5 * (height - halfTexel)),
+                  254.0 * 0.5 * halfTexel + 2.0);
       // The corners of a cell are its margin: nothing covers them.
       EXPECT_EQ(coverage.rgba8[4 * ((size_t(row * texels) * coverage.width) + column * texels) + 3],
                 0);

@@ -267,12 +267,26 @@ void ImpostorCapture::addImpostors(const Scene& source, GpuScene& scene, uint32_
     bool eligible = draw.levelCount > 0 && !draw.textured && !draw.transparent && !draw.masked &&
                     !draw.hidden && object.material.reflectivity == 0.0f &&
                     std::isfinite(sphere.radius) && sphere.radius > 0.0f;
+    auto key = std::make_tuple(draw.firstIndex, draw.indexCount, draw.vertexOffset);
+    // A scene of many distinct meshes gets atlases for the first ones only.
+    eligible = eligible && (atlases.count(key) > 0 || atlases.size() < kMaxImpostorAtlases);
     if (eligible) {
-      auto key = std::make_tuple(draw.firstIndex, draw.indexCount, draw.vertexOffset);
       auto [atlas, added] = atlases.emplace(key, int32_t(scene.impostorTextures.size() / 2));
       if (added) {
+        // The coarsest level of the chain within half a texel looks the
+        // same in the atlas as the full mesh and costs a fraction to draw
+        // 256 times.
+        DrawItem source = draw;
+        float halfTexel = impostorHalfSize(sphere.radius, cellTexels) / float(cellTexels);
+        for (uint32_t i = 0; i < draw.levelCount; ++i) {
+          const DrawLevel& level = scene.levels[draw.firstLevel + i];
+          if (level.error > halfTexel) break;
+          source.firstIndex = level.firstIndex;
+          source.indexCount = level.indexCount;
+          source.vertexOffset = level.vertexOffset;
+        }
         ImpostorTextures textures =
-            capture(scene, draw, sphere.centre, sphere.radius, cells, cellTexels);
+            capture(scene, source, sphere.centre, sphere.radius, cells, cellTexels);
         scene.impostorTextures.push_back(std::move(textures.coverage));
         scene.impostorTextures.push_back(std::move(textures.normals));
       }

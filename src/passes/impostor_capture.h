@@ -9,6 +9,7 @@
 // white diffuse map whose alpha the cut-out tests) and the normals in each
 // cell's frame (a tangent-space normal map of the quad). Runs at upload,
 // once per distinct mesh, never per frame.
+#include <cstddef>
 #include <glm/glm.hpp>
 
 #include "core/scene/scene.h"
@@ -27,6 +28,11 @@ struct ImpostorTextures {
   Texture normals;
 };
 
+// Atlases one scene may have (each 512 x 512 x 2 textures with their mips,
+// about 2.8 MB of device memory at the default size): meshes past the first
+// this many distinct ones keep chains that end in meshes.
+inline constexpr size_t kMaxImpostorAtlases = 64;
+
 class ImpostorCapture {
  public:
   explicit ImpostorCapture(const Context& context);
@@ -38,8 +44,9 @@ class ImpostorCapture {
   // Gives every draw with a detail chain one more, coarsest level: its
   // impostor (a DrawLevel whose `impostor` names an impostor billboard
   // appended to scene.billboards), for opaque, untextured, non-reflective
-  // materials. One atlas per distinct mesh (GpuScene::impostorTextures),
-  // one billboard per atlas and material. Its error is impostorError's, at
+  // materials. One atlas per distinct mesh (GpuScene::impostorTextures; at
+  // most kMaxImpostorAtlases), captured from the coarsest level of its
+  // chain within half a texel; one billboard per atlas and material. Its error is impostorError's, at
   // least the chain's coarsest so errors still rise along the chain.
   void addImpostors(const Scene& source, GpuScene& scene, uint32_t cells,
                     uint32_t cellTexels) const;
