@@ -82,6 +82,32 @@ TEST_F(ImpostorTest, SphereAtlasSeesAFacingDiscInEveryCell) {
     }
 }
 
+// Many distinct meshes: the first kMaxImpostorAtlases get an atlas each,
+// the others keep chains that end in meshes.
+TEST_F(ImpostorTest, AtlasesStopAtTheLimit) {
+  Scene scene;
+  for (size_t i = 0; i < kMaxImpostorAtlases + 6; ++i) {
+    ShapeDesc sphere;
+    sphere.kind = ShapeKind::UvSphere;
+    sphere.radius = 0.5f + 0.01f * float(i);  // each its own mesh
+    sphere.tessellation = 8;
+    Object object;
+    object.mesh = scene.addShape(sphere);
+    object.transform = translation(glm::vec3(float(i), 0.0f, 0.0f));
+    scene.objects.push_back(object);
+  }
+  GpuScene gpu = renderer().upload(scene, {.environmentCube = false, .detailChains = true});
+  EXPECT_EQ(gpu.impostorTextures.size(), 2 * kMaxImpostorAtlases);
+  EXPECT_EQ(gpu.impostorDraws, kMaxImpostorAtlases);
+  for (size_t i = 0; i < gpu.draws.size(); ++i) {
+    const DrawItem& draw = gpu.draws[i];
+    ASSERT_GT(draw.levelCount, 0u);
+    bool impostor =
+        gpu.levels[draw.firstLevel + draw.levelCount - 1].impostor != DrawLevel::kNoImpostor;
+    EXPECT_EQ(impostor, i < kMaxImpostorAtlases) << "object " << i;
+  }
+}
+
 TEST_F(ImpostorTest, TeapotImpostorMatchesGolden) {
   RenderResult result = renderer().renderToImage(impostorScene(), impostorSettings());
   EXPECT_EQ(result.stats.impostors, 1u);
