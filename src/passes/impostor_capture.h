@@ -46,8 +46,8 @@ class ImpostorCapture {
   // appended to scene.billboards), for opaque, untextured, non-reflective
   // materials. One atlas per distinct mesh (GpuScene::impostorTextures; at
   // most kMaxImpostorAtlases), captured from the coarsest level of its
-  // chain within half a texel; one billboard per atlas and material. Its error is impostorError's, at
-  // least the chain's coarsest so errors still rise along the chain.
+  // chain within half a texel; one billboard per atlas and material. Its error is impostorError's,
+  // at least the chain's coarsest so errors still rise along the chain.
   void addImpostors(const Scene& source, GpuScene& scene, uint32_t cells,
                     uint32_t cellTexels) const;
 
