@@ -27,7 +27,7 @@ struct Teapot {
   float radius;
 };
 
-// The teapot as addImpostors sees it: its box's centre, its farthest vertex.
+// The teapot and the sphere addImpostors captures it around.
 Teapot teapotScene() {
   Teapot teapot;
   Scene& scene = teapot.scene;
@@ -49,11 +49,9 @@ Teapot teapotScene() {
   object.material.ks = glm::vec3(0.5f);
   object.material.shininess = 48.0f;
   scene.objects.push_back(object);
-  Bounds box = computeBounds(scene.meshes[0]);
-  teapot.centre = 0.5f * (box.min + box.max);
-  teapot.radius = 0.0f;
-  for (const Vertex& vertex : scene.meshes[0].vertices)
-    teapot.radius = std::max(teapot.radius, glm::length(vertex.position - teapot.centre));
+  ImpostorSphere sphere = impostorSphere(scene.meshes[0]);
+  teapot.centre = sphere.centre;
+  teapot.radius = sphere.radius;
   return teapot;
 }
 

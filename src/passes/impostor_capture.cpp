@@ -239,20 +239,11 @@ ImpostorTextures ImpostorCapture::capture(const GpuScene& scene, const DrawItem&
 void ImpostorCapture::addImpostors(const Scene& source, GpuScene& scene, uint32_t cells,
                                    uint32_t cellTexels) const {
   if (cells == 0 || cellTexels == 0) return;
-  struct Sphere {
-    glm::vec3 centre;
-    float radius;
-  };
-  std::map<uint32_t, Sphere> spheres;  // by mesh: the centre of its box, its farthest vertex
+  std::map<uint32_t, ImpostorSphere> spheres;  // by mesh
   auto sphereOf = [&](uint32_t mesh) {
     auto found = spheres.find(mesh);
     if (found != spheres.end()) return found->second;
-    const Mesh& geometry = source.meshes[mesh];
-    Bounds box = computeBounds(geometry);
-    Sphere sphere{0.5f * (box.min + box.max), 0.0f};
-    for (const Vertex& vertex : geometry.vertices)
-      sphere.radius = std::max(sphere.radius, glm::length(vertex.position - sphere.centre));
-    return spheres[mesh] = sphere;
+    return spheres[mesh] = impostorSphere(source.meshes[mesh]);
   };
   // An atlas per full index range; a billboard per atlas and material.
   std::map<std::tuple<uint32_t, uint32_t, int32_t>, int32_t> atlases;
@@ -263,7 +254,7 @@ void ImpostorCapture::addImpostors(const Scene& source, GpuScene& scene, uint32_
   for (DrawItem& draw : scene.draws) {
     uint32_t impostor = DrawLevel::kNoImpostor;
     const Object& object = source.objects[size_t(draw.constants.object.x)];
-    Sphere sphere = sphereOf(object.mesh);
+    ImpostorSphere sphere = sphereOf(object.mesh);
     bool eligible = draw.levelCount > 0 && !draw.textured && !draw.transparent && !draw.masked &&
                     !draw.hidden && object.material.reflectivity == 0.0f &&
                     std::isfinite(sphere.radius) && sphere.radius > 0.0f;

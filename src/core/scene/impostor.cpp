@@ -12,6 +12,14 @@ float signNotZero(float value) {
 
 }  // namespace
 
+ImpostorSphere impostorSphere(const Mesh& mesh) {
+  Bounds box = computeBounds(mesh);
+  ImpostorSphere sphere{0.5f * (box.min + box.max), 0.0f};
+  for (const Vertex& vertex : mesh.vertices)
+    sphere.radius = std::max(sphere.radius, glm::length(vertex.position - sphere.centre));
+  return sphere;
+}
+
 glm::vec2 octahedralEncode(glm::vec3 direction) {
   float l1 = std::abs(direction.x) + std::abs(direction.y) + std::abs(direction.z);
   if (!(l1 > 0.0f)) return glm::vec2(0.0f);  // no direction (or NaN): the +y cell's corner

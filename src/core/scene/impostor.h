@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "core/scene/mesh.h"
+
 namespace shadelab {
 
 // The cells per side an atlas has when nothing else is asked, and the texels
@@ -27,6 +29,14 @@ inline constexpr uint32_t kImpostorCellTexels = 32;
 // Texels of empty margin on each side of a cell, so that filtering and the
 // first mip levels do not pull in the neighbouring cells' pixels.
 inline constexpr uint32_t kImpostorCellMargin = 2;
+
+// The sphere an atlas is captured around, in the mesh's units: the centre of
+// its box and the distance from there to its farthest vertex.
+struct ImpostorSphere {
+  glm::vec3 centre{0.0f};
+  float radius = 0.0f;
+};
+ImpostorSphere impostorSphere(const Mesh& mesh);
 
 glm::vec2 octahedralEncode(glm::vec3 direction);  // unit direction -> [-1, 1]^2
 glm::vec3 octahedralDecode(glm::vec2 point);      // [-1, 1]^2 -> unit direction
