@@ -108,6 +108,38 @@ TEST_F(ImpostorTest, AtlasesStopAtTheLimit) {
   }
 }
 
+// Hostile sizes: a mesh shrunk towards zero or grown towards the float
+// limit (outside impostorRadiusUsable's range) keeps a chain of meshes, and the scene still draws
+// (no validation message, no crash) with the one sphere of ordinary size as its impostor.
+TEST_F(ImpostorTest, MeshesTooSmallOrTooLargeKeepTheirMeshChains) {
+  Scene scene;
+  const float radii[] = {1e-35f, 1.0f, 1e35f};
+  for (float radius : radii) {
+    ShapeDesc sphere;
+    sphere.kind = ShapeKind::UvSphere;
+    sphere.radius = radius;
+    sphere.tessellation = 16;
+    Object object;
+    object.mesh = scene.addShape(sphere);
+    scene.objects.push_back(object);
+  }
+  EXPECT_FALSE(impostorRadiusUsable(std::nanf("")));
+  GpuScene gpu = renderer().upload(scene, {.environmentCube = false, .detailChains = true});
+  EXPECT_EQ(gpu.impostorDraws, 1u);
+  EXPECT_EQ(gpu.impostorTextures.size(), 2u);
+  for (const DrawItem& draw : gpu.draws) {
+    ASSERT_GT(draw.levelCount, 0u);
+    bool impostor =
+        gpu.levels[draw.firstLevel + draw.levelCount - 1].impostor != DrawLevel::kNoImpostor;
+    EXPECT_EQ(impostor, draw.constants.object.x == 1);
+  }
+  RenderSettings settings = impostorSettings();
+  scene.camera.eye = glm::vec3(0.0f, 0.0f, 40.0f);
+  scene.camera.far = 1000.0f;
+  RenderResult result = renderer().renderToImage(scene, settings);
+  EXPECT_EQ(result.stats.impostors, 1u);
+}
+
 TEST_F(ImpostorTest, TeapotImpostorMatchesGolden) {
   RenderResult result = renderer().renderToImage(impostorScene(), impostorSettings());
   EXPECT_EQ(result.stats.impostors, 1u);

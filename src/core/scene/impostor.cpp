@@ -20,6 +20,10 @@ ImpostorSphere impostorSphere(const Mesh& mesh) {
   return sphere;
 }
 
+bool impostorRadiusUsable(float radius) {
+  return radius >= 1e-30f && radius <= 1e30f;
+}
+
 glm::vec2 octahedralEncode(glm::vec3 direction) {
   float l1 = std::abs(direction.x) + std::abs(direction.y) + std::abs(direction.z);
   if (!(l1 > 0.0f)) return glm::vec2(0.0f);  // no direction (or NaN): the +y cell's corner

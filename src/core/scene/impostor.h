@@ -37,6 +37,12 @@ struct ImpostorSphere {
   float radius = 0.0f;
 };
 ImpostorSphere impostorSphere(const Mesh& mesh);
+// Whether a mesh of this radius gets an impostor: 1e-30 .. 1e30, eight
+// orders of magnitude inside float's range, so 1 / radius, 3 radius and the
+// products in the capture's matrices and the quad stay finite. Outside it (a
+// mesh collapsed towards a point, coordinates near the float limit, NaN)
+// its chain ends in meshes.
+bool impostorRadiusUsable(float radius);
 
 glm::vec2 octahedralEncode(glm::vec3 direction);  // unit direction -> [-1, 1]^2
 glm::vec3 octahedralDecode(glm::vec2 point);      // [-1, 1]^2 -> unit direction
