@@ -109,7 +109,8 @@ TEST_F(ImpostorTest, AtlasesStopAtTheLimit) {
 }
 
 // Hostile sizes: a mesh shrunk towards zero or grown towards the float
-// limit (outside impostorRadiusUsable's range) keeps a chain of meshes, and the scene still draws
+// limit has a radius of 0 or infinity (impostorRadiusUsable) and keeps a
+// chain of meshes (without the check the capture divides by 0), and the scene still draws
 // (no validation message, no crash) with the one sphere of ordinary size as its impostor.
 TEST_F(ImpostorTest, MeshesTooSmallOrTooLargeKeepTheirMeshChains) {
   Scene scene;

@@ -21,7 +21,7 @@ ImpostorSphere impostorSphere(const Mesh& mesh) {
 }
 
 bool impostorRadiusUsable(float radius) {
-  return radius >= 1e-30f && radius <= 1e30f;
+  return std::isfinite(radius) && radius > 0.0f;
 }
 
 glm::vec2 octahedralEncode(glm::vec3 direction) {

@@ -37,11 +37,10 @@ struct ImpostorSphere {
   float radius = 0.0f;
 };
 ImpostorSphere impostorSphere(const Mesh& mesh);
-// Whether a mesh of this radius gets an impostor: 1e-30 .. 1e30, eight
-// orders of magnitude inside float's range, so 1 / radius, 3 radius and the
-// products in the capture's matrices and the quad stay finite. Outside it (a
-// mesh collapsed towards a point, coordinates near the float limit, NaN)
-// its chain ends in meshes.
+// Whether a mesh of this radius gets an impostor: finite and above 0. The
+// capture divides by it. impostorSphere's lengths square the coordinates,
+// so a mesh collapsed below about 1e-22 comes out as 0 and one beyond about
+// 1.8e19 as infinite (NaN stays NaN): those keep chains of meshes.
 bool impostorRadiusUsable(float radius);
 
 glm::vec2 octahedralEncode(glm::vec3 direction);  // unit direction -> [-1, 1]^2
