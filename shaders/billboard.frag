@@ -12,9 +12,9 @@
 #include "bump.glsl"
 
 layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
+layout(location = 1) flat in vec3 inNormal;
 layout(location = 4) in vec2 inUv;
-layout(location = 5) in vec4 inTangent;
+layout(location = 5) flat in vec4 inTangent;
 
 layout(location = 0) out vec4 outColor;
 
@@ -24,6 +24,10 @@ layout(location = 0) out vec4 outColor;
 layout(constant_id = SPEC_BILLBOARD_BUMP) const bool bumpMapped = false;
 
 void main() {
+  // A trimmed copy's triangle reaches past the quad: what lies outside it
+  // is not the billboard's.
+  if (draw.optics.w > 0.5 && (any(lessThan(inUv, vec2(0.0))) || any(greaterThan(inUv, vec2(1.0)))))
+    discard;
   vec2 st = textureCoordinate(inUv);
   vec4 texel = texture(diffuseMap, st);
   if (alphaMask && texel.a < draw.ka.w) discard;

@@ -12,7 +12,8 @@
 //   impostor     right and up as the host chose them: the axes of the atlas
 //                cell captured nearest the view direction (core/scene/
 //                impostor.h), so the quad lies where the captured image did.
-// optics.y: where the anchor sits on the quad's height (0 bottom, 0.5 centre).
+// optics.y: where the anchor sits on the quad's height (0 bottom, 0.5 centre);
+// optics.w = 1: each copy is its outline triangle instead of the quad.
 #extension GL_GOOGLE_include_directive : require
 #include "lighting.glsl"
 
@@ -21,9 +22,9 @@ layout(set = 2, binding = BINDING_BILLBOARD_INSTANCES, std430) readonly buffer I
 };
 
 layout(location = 0) out vec3 outPosition;  // eye space
-layout(location = 1) out vec3 outNormal;    // eye space, unit
+layout(location = 1) flat out vec3 outNormal;    // eye space, unit
 layout(location = 4) out vec2 outUv;
-layout(location = 5) out vec4 outTangent;  // eye space: the quad's right, w = 1
+layout(location = 5) flat out vec4 outTangent;  // eye space: the quad's right, w = 1
 
 // A unit vector perpendicular to `axis`, for a view along it (degenerate).
 vec3 anyPerpendicular(vec3 axis) {
@@ -61,6 +62,12 @@ void main() {
   // bits of two masks (vertex i's x is bit i of 0b010110, y of 0b110100):
   // llvmpipe turns an indexed constant array into a per-lane gather.
   vec2 corner = vec2(float((22 >> gl_VertexIndex) & 1), float((52 >> gl_VertexIndex) & 1));
+  // A trimmed copy: three vertices, the corners of its outline triangle
+  // (core/scene/billboard_outline.h), in the same quad coordinates.
+  if (draw.optics.w > 0.5)
+    corner = unpackHalf2x16(gl_VertexIndex == 0   ? instance.outline.x
+                            : gl_VertexIndex == 1 ? instance.outline.y
+                                                  : instance.outline.z);
   vec3 eye = anchor + right * ((corner.x - 0.5) * instance.centre.w) +
              up * ((corner.y - draw.optics.y) * instance.up.w);
   outPosition = eye;

@@ -11,6 +11,7 @@
 namespace shadelab::gpu {
 using vec4 = glm::vec4;
 using ivec4 = glm::ivec4;
+using uvec4 = glm::uvec4;
 using mat4 = glm::mat4;
 #endif
 
@@ -49,7 +50,7 @@ using mat4 = glm::mat4;
 // the atlas cell BillboardInstance::right.w of DrawConstants::optics.z per side.
 #define BILLBOARD_IMPOSTOR 3
 // The most instances one object may have, and a scene in all: each visible
-// one is 48 bytes per frame in flight; a million is ~1 s per frame on lavapipe.
+// one is 64 bytes per frame in flight; a million is ~1 s per frame on lavapipe.
 #define MAX_INSTANCES_PER_OBJECT 262144
 #define MAX_INSTANCES_PER_SCENE 1048576
 // Copies of meshes a scene may have in all: each is an object of its own on
@@ -184,6 +185,10 @@ struct BillboardInstance {
   vec4 centre;  // xyz = the anchor point, eye space; w = the quad's width
   vec4 up;      // xyz = unit axis (cylindrical) or up (spherical), eye space; w = the height
   vec4 right;   // impostors: xyz = the captured view's unit right, eye space; w = its atlas cell
+  // Trimmed copies (DrawConstants::optics.w = 1): the corners of the triangle
+  // drawn instead of the quad, in quad coordinates (x across, y up, 0..1 on
+  // the quad), two halves each (packHalf2x16): x = corner 0, y = 1, z = 2.
+  uvec4 outline;
 };
 
 // The procedural sky (shaders/sky.glsl, mirrored by skyRadiance in core/scene/environment.cpp).

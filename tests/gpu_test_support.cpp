@@ -1,5 +1,7 @@
 #include "gpu_test_support.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -45,6 +47,18 @@ std::string testOutputDir() {
 
 ImageU8 loadGolden(const std::string& name) {
   return readImageU8(fs::path(SHADELAB_GOLDEN_DIR) / (name + ".png"));
+}
+
+size_t valuesBeyondOneHalfStep(const std::vector<float>& a, const std::vector<float>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  size_t count = 0;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+    float larger = std::max(std::abs(a[i]), std::abs(b[i]));
+    // A half has 10 fraction bits; below 2^-14 its steps are 2^-24 apart.
+    float step = larger < 0x1p-14f ? 0x1p-24f : std::exp2(std::floor(std::log2(larger)) - 10.0f);
+    count += std::abs(a[i] - b[i]) > step;
+  }
+  return count;
 }
 
 ::testing::AssertionResult matchesImage(const ImageU8& expected, const ImageU8& actual,

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "core/metrics/metrics.h"
 #include "core/vulkan/context.h"
@@ -40,6 +41,9 @@ inline constexpr ImageTolerance kGoldenTolerance{40.0, 4, 0.005};
 ::testing::AssertionResult matchesImage(const ImageU8& expected, const ImageU8& actual,
                                         const ImageTolerance& tolerance = kGoldenTolerance);
 ImageU8 loadGolden(const std::string& name);
+// How many values of `a` and `b` (linear RGBA, read back from the RGBA16F
+// target) are more than one half-float step apart.
+size_t valuesBeyondOneHalfStep(const std::vector<float>& a, const std::vector<float>& b);
 std::string testOutputDir();
 
 }  // namespace shadelab::test

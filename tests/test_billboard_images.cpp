@@ -3,10 +3,13 @@
 // instanced scene bit-identical to the same billboards drawn one by one;
 // per-instance culling that changes no pixel.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "core/scene/procedural_textures.h"
 #include "core/scene/scene_json.h"
+#include "core/scene/texture.h"
 #include "gpu_test_support.h"
 
 namespace shadelab::test {
@@ -215,6 +218,86 @@ TEST_F(BillboardImages, CylindricalSeenAlongItsAxisIsEdgeOn) {
   uint64_t cylindrical = treePixels(render(scene, small()));
   EXPECT_GT(spherical, 1000u);  // 2,222 here; the cylindrical quad: 0
   EXPECT_LT(cylindrical * 50, spherical) << "cylindrical " << cylindrical;
+}
+
+// Trimmed outlines (core/scene/billboard_outline.h): a triangle around what
+// the texture can show at the levels a copy samples draws the quad's pixels.
+// Trees float apart (no ground, no two quads meeting, so no depth ties),
+// from 0.8 to 100 units away: magnified down to ~1 pixel, every mip level;
+// three kinds cut out and one row blended; each texture filter.
+std::string floatingTrees(float cutoff) {
+  std::string rows;
+  const char* kinds[] = {"screen", "spherical", "cylindrical", "cylindrical"};
+  const float distances[] = {0.8f, 1.5f, 3.0f, 6.0f, 12.0f, 25.0f, 50.0f, 100.0f};
+  for (int row = 0; row < 4; ++row) {
+    std::string list;
+    for (int i = 0; i < 8; ++i) {
+      float d = distances[i] * (1.0f + 0.15f * float(row));
+      float x = d * std::tan(0.17f * (float(i) - 3.5f)),
+            y = d * std::tan(0.2f * (float(row) - 1.5f));
+      list += std::string(list.empty() ? "" : ", ") + "[{\"translate\": [" + std::to_string(x) +
+              ", " + std::to_string(y) + ", " + std::to_string(-d) + "]}]";
+    }
+    rows += std::string(row ? ", " : "") + R"({"shape": "billboard", "kind": ")" + kinds[row] +
+            R"(", "size": [0.3, 0.4], "material": "tree", )" +
+            (row == 3 ? std::string(R"("alpha": "blend")")
+                      : R"("alpha_cutoff": )" + std::to_string(cutoff)) +
+            R"(, "instances": {"list": [)" + list + "]}}";
+  }
+  return R"({"camera": {"eye": [0, 0, 0], "at": [0, 0, -1], "fovy": 50},
+    "background": [0.4, 0.55, 0.8],
+    "lights": [{"type": "directional", "direction": [-1, -1, -1]}],
+    "materials": {"tree": {"ka": 0.4, "kd": 0.8, "ks": 0.3, "shininess": 16,
+      "diffuse_map": {"procedural": "tree", "size": 128},
+      "sampler": {"wrap_u": "clamp_to_edge", "wrap_v": "clamp_to_edge"}}},
+    "objects": [)" +
+         rows + "]}";
+}
+
+TEST_F(BillboardImages, TrimmedOutlinesDrawTheQuadsPixels) {
+  Scene scene = parseSceneJson(floatingTrees(0.5f), "floating.json");
+  for (std::optional<TextureFilter> filter :
+       {std::optional<TextureFilter>(), std::optional(TextureFilter::Nearest),
+        std::optional(TextureFilter::Bilinear), std::optional(TextureFilter::Trilinear)}) {
+    SCOPED_TRACE(filter ? textureFilterName(*filter) : "material's");
+    RenderSettings settings = small();
+    settings.textures.filterOverride = filter;
+    RenderResult trimmed = renderer().renderToImage(scene, settings);
+    settings.trimBillboards = false;
+    RenderResult quads = renderer().renderToImage(scene, settings);
+    // The cut-out rows are trimmed at every distance; the blended row where
+    // a level's alpha leaves room (its coarsest levels cover the quad).
+    uint32_t instances = trimmed.stats.billboardInstances;
+    EXPECT_GE(instances, 28u);  // a few nearest copies reach past the view
+    EXPECT_GE(trimmed.stats.trimmedInstances, 20u);
+    EXPECT_EQ(quads.stats.trimmedInstances, 0u);
+    EXPECT_EQ(trimmed.stats.triangles + trimmed.stats.trimmedInstances, quads.stats.triangles);
+    // The uv a fragment interpolates from another triangle may round
+    // differently: a filtered texel then moves by one RGBA16F step (one
+    // 8-bit code at most), never more; a fragment the triangle missed would
+    // differ by far more.
+    EXPECT_EQ(valuesBeyondOneHalfStep(trimmed.image.pixels, quads.image.pixels), 0u);
+    EXPECT_LE(compareImages(encodeSrgb8(trimmed.image), encodeSrgb8(quads.image)).maxDifference, 1);
+  }
+  // Twin: the cut-out's edge moved (a cut-off of 0.45 instead of 0.5) is
+  // caught by the same comparison, as a triangle cutting into it would be.
+  RenderResult trimmed = renderer().renderToImage(scene, small());
+  RenderSettings settings = small();
+  settings.trimBillboards = false;
+  RenderResult moved =
+      renderer().renderToImage(parseSceneJson(floatingTrees(0.45f), "moved.json"), settings);
+  EXPECT_GT(valuesBeyondOneHalfStep(trimmed.image.pixels, moved.image.pixels), 20u);
+}
+
+// Multisampled and anisotropic frames draw quads (the header says why).
+TEST_F(BillboardImages, MultisampledAndAnisotropicFramesDrawQuads) {
+  Scene scene = parseSceneJson(floatingTrees(0.5f), "floating.json");
+  RenderSettings settings = small();
+  settings.msaaSamples = 4;
+  EXPECT_EQ(renderer().renderToImage(scene, settings).stats.trimmedInstances, 0u);
+  settings = small();
+  settings.textures.filterOverride = TextureFilter::Anisotropic;
+  EXPECT_EQ(renderer().renderToImage(scene, settings).stats.trimmedInstances, 0u);
 }
 
 }  // namespace

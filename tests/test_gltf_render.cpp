@@ -93,20 +93,6 @@ TEST_F(GltfRender, TextureAppearsTheWayUpGltfMeans) {
   EXPECT_FALSE(matchesImage(loadGolden("gltf-textured"), render(scene, settings)));
 }
 
-// How many values of `a` and `b` (linear RGBA, read back from the RGBA16F
-// target) are more than one half-float step apart.
-size_t valuesBeyondOneHalfStep(const std::vector<float>& a, const std::vector<float>& b) {
-  EXPECT_EQ(a.size(), b.size());
-  size_t count = 0;
-  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    float larger = std::max(std::abs(a[i]), std::abs(b[i]));
-    // A half has 10 fraction bits; below 2^-14 its steps are 2^-24 apart.
-    float step = larger < 0x1p-14f ? 0x1p-24f : std::exp2(std::floor(std::log2(larger)) - 10.0f);
-    count += std::abs(a[i] - b[i]) > step;
-  }
-  return count;
-}
-
 // Materials compiled into their pipelines (the default) against materials
 // read from push constants: in every model, with textures, environment,
 // shadows, transparency and a glTF model's materials. Compiled-in constants

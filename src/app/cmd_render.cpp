@@ -309,6 +309,8 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
                          {"culled_draws", result.stats.culledDraws},
                          {"coarser_draws", result.stats.coarserDraws},
                          {"impostors", result.stats.impostors},
+                         {"billboard_copies", result.stats.billboardInstances},
+                         {"trimmed_copies", result.stats.trimmedInstances},
                          {"device_memory_bytes", result.stats.deviceMemoryBytes},
                          {"outputs", {{"image", jsonPath(options.output)}}}};
   json["settings"]["frames"] = settings.frames;

@@ -80,6 +80,7 @@ nlohmann::json toJson(const FrameSettings& settings) {
       {"shadow_cache", settings.keepShadowMaps},
       {"lod", settings.lod ? nlohmann::json(settings.lodErrorPixels) : nlohmann::json("off")},
       {"impostor_cells", settings.impostorCells},
+      {"billboard_outline", settings.trimBillboards ? "trimmed" : "quad"},
       {"shadow_bias",
        {{"constant", settings.shadowBias.constant},
         {"slope", settings.shadowBias.slope},

@@ -100,6 +100,13 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
       ->capture_default_str()
       ->check(CLI::IsMember({"on", "off"}));
   command
+      ->add_option("--billboard-outline", options.billboardOutline,
+                   "Cut-out and blended billboards drawn as one triangle around what their "
+                   "texture can show at the mip levels they sample (trimmed; single-sampled, "
+                   "not anisotropic), or as whole quads (quad: the same image)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"trimmed", "quad"}));
+  command
       ->add_option("--impostors", options.impostors,
                    "With --lod auto, each opaque untextured mesh's chain ends in an impostor: a "
                    "quad showing the mesh as captured from the nearest of 16x16 directions "
@@ -120,6 +127,7 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
   settings.lodErrorPixels = options.lodError;
   settings.instancing = options.instancing == "on";
   settings.impostorCells = options.impostors == "on" ? kImpostorCells : 0;
+  settings.trimBillboards = options.billboardOutline == "trimmed";
 }
 
 float parseTessellationFactor(const std::string& text) {

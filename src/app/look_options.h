@@ -35,11 +35,12 @@ struct LookOptions {
   // images are the same either way, linear ones within a half-float step,
   // and a pipeline per material costs more start-up than one frame saves).
   std::string materialConstants = "auto";
-  ShadowOptions shadows;          // --shadows, --shadow-size, the bias options
-  std::string lod = "off";        // --lod auto|off (view sets "auto" before adding)
-  float lodError = 0.5f;          // --lod-error, pixels
-  std::string instancing = "on";  // --instancing on|off
-  std::string impostors = "on";   // --impostors on|off
+  ShadowOptions shadows;                     // --shadows, --shadow-size, the bias options
+  std::string lod = "off";                   // --lod auto|off (view sets "auto" before adding)
+  float lodError = 0.5f;                     // --lod-error, pixels
+  std::string instancing = "on";             // --instancing on|off
+  std::string impostors = "on";              // --impostors on|off
+  std::string billboardOutline = "trimmed";  // --billboard-outline trimmed|quad
 };
 
 void addLookOptions(CLI::App* command, LookOptions& options);

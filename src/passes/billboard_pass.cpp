@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstring>
+#include <glm/gtc/packing.hpp>
 
 #include "core/scene/frustum.h"
 #include "core/scene/impostor.h"
@@ -183,12 +184,41 @@ gpu::BillboardInstance impostorInstance(const ImpostorAtlas& atlas, const glm::m
   float height = 2.0f * atlas.halfSize * glm::length(up);
   return {glm::vec4(glm::vec3(modelView * glm::vec4(atlas.centre, 1.0f)), width),
           glm::vec4(glm::normalize(up), height),
-          glm::vec4(glm::normalize(right), float(cell.index(atlas.cells)))};
+          glm::vec4(glm::normalize(right), float(cell.index(atlas.cells))), glm::uvec4(0u)};
 }
+
+namespace {
+
+uint32_t packCorners(glm::vec2 corner) {
+  return glm::packHalf2x16(corner);
+}
+
+glm::vec3 anyPerpendicular(glm::vec3 axis) {
+  glm::vec3 r = glm::cross(axis, glm::vec3(0.0f, 0.0f, 1.0f));
+  if (glm::dot(r, r) < 1e-12f) r = glm::cross(axis, glm::vec3(1.0f, 0.0f, 0.0f));
+  return glm::normalize(r);
+}
+
+// The quad's right and up in eye space, as billboard.vert turns it.
+std::pair<glm::vec3, glm::vec3> quadAxes(int kind, glm::vec3 anchor, glm::vec3 up) {
+  if (kind == BILLBOARD_SCREEN) return {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
+  if (kind == BILLBOARD_SPHERICAL) {
+    float length = glm::length(anchor);
+    glm::vec3 normal = length > 0.0f ? -anchor / length : glm::vec3(0.0f, 0.0f, 1.0f);
+    glm::vec3 r = glm::cross(up, normal);
+    glm::vec3 right = glm::dot(r, r) > 1e-12f ? glm::normalize(r) : anyPerpendicular(normal);
+    return {right, glm::cross(normal, right)};
+  }
+  glm::vec3 r = glm::cross(up, -anchor);
+  return {glm::dot(r, r) > 1e-12f ? glm::normalize(r) : anyPerpendicular(up), up};
+}
+
+}  // namespace
 
 BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& scene,
                                            const glm::mat4& view, const glm::mat4& projection,
-                                           bool cull, std::span<const ImpostorCopy> impostors) {
+                                           bool cull, const BillboardTrim& trim,
+                                           std::span<const ImpostorCopy> impostors) {
   assert(frameSlot < kFrameSlots && instances_[frameSlot]);
   BillboardFrame result;
   Frustum frustum = frustumFromMatrix(projection * view);
@@ -197,19 +227,23 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     float depth;
     uint32_t billboard;
     gpu::BillboardInstance instance;
+    bool trimmed;
   };
   std::vector<Blended> blended;
-  std::vector<std::pair<float, gpu::BillboardInstance>> cutOut;  // one billboard's, with depth
+  // One billboard's cut-out copies, with depth: trimmed ones, whole ones.
+  std::vector<std::pair<float, gpu::BillboardInstance>> cutOut[2];
   glm::mat3 rotation(view);
   for (uint32_t b = 0; b < scene.billboards.size(); ++b) {
     const GpuBillboard& billboard = scene.billboards[b];
     glm::vec3 up = glm::normalize(rotation * billboard.up);
     float anchor = billboard.constants.optics.y;
+    int kind = int(billboard.constants.optics.x);
     // Screen-aligned quads rise along the image's y, the others along `up` (or near it).
-    glm::vec3 rise =
-        int(billboard.constants.optics.x) == BILLBOARD_SCREEN ? glm::vec3(0, 1, 0) : up;
-    BillboardDraw draw{b, result.instances, 0, 0.0f};
-    cutOut.clear();
+    glm::vec3 rise = kind == BILLBOARD_SCREEN ? glm::vec3(0, 1, 0) : up;
+    bool trims = trim.enabled && !billboard.outlines.empty() &&
+                 trim.filterOverride.value_or(billboard.filter) != TextureFilter::Anisotropic;
+    cutOut[0].clear();
+    cutOut[1].clear();
     for (const BillboardPlacement& placement : billboard.instances) {
       // Any corner lies within the diagonal of the anchor, whichever way the quad turns.
       float radius = glm::length(placement.size);
@@ -219,22 +253,41 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
       }
       gpu::BillboardInstance instance{
           glm::vec4(glm::vec3(view * glm::vec4(placement.position, 1.0f)), placement.size.x),
-          glm::vec4(up, placement.size.y), glm::vec4(0.0f)};
+          glm::vec4(up, placement.size.y), glm::vec4(0.0f), glm::uvec4(0u)};
+      bool trimmed = false;
+      if (trims) {
+        glm::vec3 anchorEye(instance.centre);
+        auto [right, quadUp] = quadAxes(kind, anchorEye, up);
+        glm::vec3 centre = anchorEye + quadUp * ((0.5f - anchor) * placement.size.y);
+        uint32_t level = billboardLevelBound(
+            {centre, right, quadUp, placement.size, billboard.texels, trim.focalPixels},
+            uint32_t(billboard.outlines.size()));
+        if (const std::optional<BillboardOutline>& outline = billboard.outlines[level]) {
+          instance.outline =
+              glm::uvec4(packCorners(outline->corners[0]), packCorners(outline->corners[1]),
+                         packCorners(outline->corners[2]), 0u);
+          trimmed = true;
+        }
+      }
       float centreZ = instance.centre.z + rise.z * (0.5f - anchor) * placement.size.y;
       if (billboard.blended)
-        blended.push_back({centreZ, b, instance});
+        blended.push_back({centreZ, b, instance, trimmed});
       else
-        cutOut.emplace_back(centreZ, instance);
+        cutOut[trimmed ? 0 : 1].emplace_back(centreZ, instance);
     }
     // Cut-out copies front to back (the largest eye-space z is the nearest):
     // the depth test then rejects the fragments of the trees behind before
     // their shading runs. In scatter order, the 3,000 trees of a first draft
     // of `lod` cost ~46 ms of a 1280x720 frame, front to back ~28 ms.
-    std::stable_sort(cutOut.begin(), cutOut.end(),
-                     [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (const auto& [z, instance] : cutOut) out[result.instances++] = instance;
-    draw.instanceCount = uint32_t(cutOut.size());
-    if (draw.instanceCount > 0) result.cutOut.push_back(draw);
+    for (int whole = 0; whole < 2; ++whole) {
+      std::vector<std::pair<float, gpu::BillboardInstance>>& copies = cutOut[whole];
+      std::stable_sort(copies.begin(), copies.end(),
+                       [](const auto& a, const auto& b) { return a.first > b.first; });
+      BillboardDraw draw{b, result.instances, uint32_t(copies.size()), 0.0f, whole ? 6u : 3u};
+      for (const auto& [z, instance] : copies) out[result.instances++] = instance;
+      if (draw.instanceCount > 0) result.cutOut.push_back(draw);
+      if (!whole) result.trimmed += draw.instanceCount;
+    }
   }
   // Impostors: culled with their objects already, and in the draws' front
   // to back order, kept within each billboard.
@@ -258,8 +311,10 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
   std::stable_sort(blended.begin(), blended.end(),
                    [](const Blended& a, const Blended& b) { return a.depth < b.depth; });
   for (const Blended& entry : blended) {
-    result.blended.push_back({entry.billboard, result.instances, 1, entry.depth});
+    result.blended.push_back(
+        {entry.billboard, result.instances, 1, entry.depth, entry.trimmed ? 3u : 6u});
     out[result.instances++] = entry.instance;
+    result.trimmed += entry.trimmed ? 1 : 0;
   }
   return result;
 }
@@ -284,6 +339,7 @@ void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel
     // A run: one billboard's consecutive instances.
     BillboardDraw run = draws[i++];
     while (i < draws.size() && draws[i].billboard == run.billboard &&
+           draws[i].vertices == run.vertices &&
            draws[i].firstInstance == run.firstInstance + run.instanceCount)
       run.instanceCount += draws[i++].instanceCount;
     const GpuBillboard& billboard = scene.billboards[run.billboard];
@@ -298,6 +354,7 @@ void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel
     if (!frame.bump && billboard.impostor.atlas < 0)
       constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
     if (frame.mipTint) constants.object.y |= TEXTURE_MIP_TINT;
+    constants.optics.w = run.vertices == 3 ? 1.0f : 0.0f;
     bool bumped = (constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
     auto pipeline =
         pipelines_.find({model, scene.lights, frame.target, frame.shadows, blended, bumped});
@@ -310,7 +367,7 @@ void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel
         cmd, layout_,
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
         sizeof(constants), &constants);
-    vkCmdDraw(cmd, 6, run.instanceCount, 0, run.firstInstance);
+    vkCmdDraw(cmd, run.vertices, run.instanceCount, 0, run.firstInstance);
   }
 }
 

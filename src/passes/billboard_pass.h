@@ -16,6 +16,7 @@
 // shadow pass leaves them out and they only receive.
 #include <glm/glm.hpp>
 #include <map>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -34,7 +35,20 @@ struct BillboardDraw {
   uint32_t billboard = 0;
   uint32_t firstInstance = 0;
   uint32_t instanceCount = 0;
-  float depth = 0.0f;  // blended: the quad centre's eye-space z (the sort key)
+  float depth = 0.0f;     // blended: the quad centre's eye-space z (the sort key)
+  uint32_t vertices = 6;  // 6: the quad; 3: trimmed (each copy its outline triangle)
+};
+
+// How prepareFrame trims copies to their outlines (core/scene/
+// billboard_outline.h): per copy, the outline of the coarsest mip level it
+// can sample (billboardLevelBound), or the quad where there is none.
+struct BillboardTrim {
+  // FrameSettings::trimBillboards on a single-sampled target: a sample of a
+  // multisampled pixel outside the triangle would lose the colour the
+  // pixel's centre gave it, so multisampled frames draw quads.
+  bool enabled = false;
+  std::optional<TextureFilter> filterOverride;  // anisotropic (own or this): the quad
+  float focalPixels = 0.0f;                     // projection[1][1] * target height / 2
 };
 
 // An object drawn as its impostor this frame (Renderer::chooseLevels):
@@ -55,6 +69,7 @@ struct BillboardFrame {
   std::vector<BillboardDraw> cutOut;   // one per alpha-tested billboard with visible instances
   std::vector<BillboardDraw> blended;  // one per visible blended instance, back to front
   uint32_t instances = 0;              // drawn (after culling)
+  uint32_t trimmed = 0;                // of those, drawn as their outline triangles
   uint32_t culled = 0;                 // instances outside the view frustum
 };
 
@@ -71,11 +86,12 @@ class BillboardPass {
                bool bumped);
   // Culls each instance's bounding sphere against the frustum (unless
   // `cull` is off), moves the survivors to eye space into `frameSlot`'s
-  // buffer (cut-out ones per billboard in scene order, then `impostors`
+  // buffer with their outlines (`trim`) (cut-out ones per billboard in scene
+  // order, trimmed before whole, then `impostors`
   // per impostor billboard, then blended ones back to front) and says how
   // to draw them. The slot's previous frame must be finished.
   BillboardFrame prepareFrame(uint32_t frameSlot, const GpuScene& scene, const glm::mat4& view,
-                              const glm::mat4& projection, bool cull,
+                              const glm::mat4& projection, bool cull, const BillboardTrim& trim,
                               std::span<const ImpostorCopy> impostors = {});
   // Records `draws` (of prepareFrame's, for this slot) inside an active
   // dynamic-rendering scope; adjacent draws of one billboard over adjacent

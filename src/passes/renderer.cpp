@@ -412,11 +412,15 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
     forwardFrame.materialSets = textures_.materialSets(settings.textures.filterOverride);
   BillboardFrame billboards;
   if (!scene.billboards.empty()) {
+    BillboardTrim trim{settings.trimBillboards && settings.msaaSamples == 1,
+                       settings.textures.filterOverride,
+                       std::abs(projection[1][1]) * 0.5f * float(settings.height)};
     billboards = billboards_.prepareFrame(frameSlot(), scene, view, projection,
-                                          settings.frustumCulling, impostors);
+                                          settings.frustumCulling, trim, impostors);
     stats.billboardInstances = billboards.instances;
     stats.culledInstances = billboards.culled;
-    stats.triangles += 2 * uint64_t(billboards.instances);
+    stats.trimmedInstances = billboards.trimmed;
+    stats.triangles += 2 * uint64_t(billboards.instances) - billboards.trimmed;
     stats.drawCalls += uint32_t(billboards.cutOut.size());
   }
 

@@ -90,6 +90,11 @@ struct FrameSettings {
   // off reads them from push constants. A few linear values may differ by
   // one RGBA16F step between the two (tests/test_gltf_render.cpp).
   bool materialConstants = true;
+  // Cut-out and blended billboards drawn as one triangle around what their
+  // texture can show (core/scene/billboard_outline.h) instead of the quad,
+  // on single-sampled targets without anisotropic filtering; off draws
+  // quads. The pixels are the quad's, up to the interpolation's rounding.
+  bool trimBillboards = true;
   // --lod auto: each object with a detail chain (SceneUploadOptions) is
   // drawn at the coarsest level whose error, projected at the object's
   // nearest point, stays within lodErrorPixels (with hysteresis between
@@ -136,6 +141,7 @@ struct RenderStats {
   uint32_t culledInstances = 0;     // billboard instances outside the view frustum
   uint32_t coarserDraws = 0;        // --lod auto: draws at a simplified level, per frame
   uint32_t impostors = 0;           // --lod auto: of those, objects drawn as their impostor
+  uint32_t trimmedInstances = 0;    // billboard copies drawn as their outline triangles
   // --lod auto, per frame: the objects (with a detail chain, in view) drawn
   // at each level, 0 in full, the last entry that level and every coarser
   // one; and the host time the choice took (Renderer::chooseLevels).

@@ -221,8 +221,29 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
                 draw.firstLevel == first.firstLevel && draw.levelCount == first.levelCount;
     if (!same) draw.instanceGroup = Object::kNotInstanced;
   }
+  // One set of outlines per texture, wrap modes and cut-off (a scene may
+  // have thousands of billboards of one material).
+  std::map<std::tuple<int32_t, TextureWrap, TextureWrap, float>,
+           std::vector<std::optional<BillboardOutline>>>
+      outlines;
   for (const Billboard& billboard : scene.billboards) {
-    gpuScene.billboards.push_back(gpuBillboard(billboard));
+    const TextureSlot& map = billboard.material.diffuseMap;
+    bool blended = billboard.alpha == BillboardAlpha::Blend;
+    float cutoff = blended ? 0.0f : billboard.material.alphaCutoff;
+    glm::uvec2 texels(0);
+    std::vector<std::optional<BillboardOutline>> trimmed;
+    // A uv scale other than 1 tiles the texture across the quad: not trimmed.
+    if (map.present() && size_t(map.texture) < scene.textures.size() &&
+        billboard.material.uvScale == glm::vec2(1.0f) && (blended || cutoff > 0.0f)) {
+      const Texture& texture = scene.textures[size_t(map.texture)];
+      texels = glm::uvec2(texture.width, texture.height);
+      auto key = std::make_tuple(map.texture, map.sampler.wrapU, map.sampler.wrapV, cutoff);
+      auto found = outlines.find(key);
+      if (found == outlines.end())
+        found = outlines.emplace(key, billboardOutlines(texture, map.sampler, cutoff)).first;
+      trimmed = found->second;
+    }
+    gpuScene.billboards.push_back(gpuBillboard(billboard, std::move(trimmed), texels));
     gpuScene.billboardInstances += uint32_t(billboard.instances.size());
   }
   std::vector<uint32_t> order = gpuLightOrder(scene);
@@ -236,9 +257,14 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
   return gpuScene;
 }
 
-GpuBillboard gpuBillboard(const Billboard& billboard) {
+GpuBillboard gpuBillboard(const Billboard& billboard,
+                          std::vector<std::optional<BillboardOutline>> outlines,
+                          glm::uvec2 texels) {
   const Material& material = billboard.material;
   GpuBillboard out;
+  out.outlines = std::move(outlines);
+  out.texels = texels;
+  out.filter = material.diffuseMap.sampler.filter;
   out.blended = billboard.alpha == BillboardAlpha::Blend;
   out.up = billboard.axis;
   out.constants.ka = glm::vec4(material.ka, out.blended ? 0.0f : material.alphaCutoff);

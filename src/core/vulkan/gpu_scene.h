@@ -4,9 +4,11 @@
 // the camera.
 #include <array>
 #include <compare>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "core/scene/billboard_outline.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene.h"
 #include "core/scene/shadows.h"
@@ -98,15 +100,26 @@ struct GpuBillboard {
   // ka.w = alpha cut-off (alpha test), kd.w = opacity (1 - transparency),
   // object.y = TEXTURE_* flags, object.z = receives shadows, texturing as for
   // meshes; optics.x = BILLBOARD_* kind, optics.y = the anchor's height on
-  // the quad as a fraction (0 bottom, 0.5 centre).
+  // the quad as a fraction (0 bottom, 0.5 centre); optics.w is set per
+  // draw: 1 when its copies are drawn as their trimmed outlines.
   gpu::DrawConstants constants{};
   glm::vec3 up{0.0f, 1.0f, 0.0f};  // world: a cylindrical one's axis, a spherical one's up
   uint32_t material = 0;           // set 1 (passes/scene_textures), numbered at upload
   bool blended = false;            // alpha blend: sorted with the transparent draws
   std::vector<BillboardPlacement> instances;
   ImpostorAtlas impostor;
+  // Trimmed outlines (core/scene/billboard_outline.h), one per mip level of
+  // the diffuse map; empty when the quad is always drawn (no diffuse map,
+  // uv scale other than 1, no cut-off, or a texture too large to examine).
+  std::vector<std::optional<BillboardOutline>> outlines;
+  glm::uvec2 texels{0};                             // the diffuse map's base level size
+  TextureFilter filter = TextureFilter::Trilinear;  // its sampler's own
 };
-GpuBillboard gpuBillboard(const Billboard& billboard);
+// `outlines`: billboardOutlines for this billboard's diffuse map, sampler
+// and cut-off (uploadScene shares them between billboards of one material).
+GpuBillboard gpuBillboard(const Billboard& billboard,
+                          std::vector<std::optional<BillboardOutline>> outlines = {},
+                          glm::uvec2 texels = glm::uvec2(0));
 
 // How many lights of each kind the shaders loop over: specialization
 // constants, so a pipeline is built per layout (point lights + directional
