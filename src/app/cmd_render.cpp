@@ -232,7 +232,12 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
 
   std::unique_ptr<Context> context = openContext(global);
   RenderResult result;
-  RenderSettings settings{size.width, size.height};
+  // Every look option as applyLookOptions set it (one list: look_options.cpp),
+  // then what render chooses itself.
+  RenderSettings settings;
+  static_cast<FrameSettings&>(settings) = look;
+  settings.width = size.width;
+  settings.height = size.height;
   std::vector<std::string> written;  // a sequence's files
   {
     Renderer renderer(*context);
@@ -263,21 +268,13 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     settings.frames = options.frames;
     settings.msaaSamples = point.msaaSamples;
     settings.depth = depth;
-    settings.environment = look.environment;
-    settings.textures = look.textures;
     // --quality chooses the shadow method and map size with the model.
     settings.shadows = options.quality ? point.shadows : look.shadows;
     settings.shadowMapSize = options.quality ? point.shadowMapSize : look.shadowMapSize;
-    settings.shadowBias = look.shadowBias;
-    settings.keepShadowMaps = look.keepShadowMaps;
     settings.materialConstants =
         look.materialConstants &&
         (options.look.materialConstants != "auto" || settings.frames > 1 || !cameras.empty());
-    settings.lod = look.lod;
     settings.srgb8 = !isLinearOutput(options.output);
-    settings.lodErrorPixels = look.lodErrorPixels;
-    settings.instancing = look.instancing;
-    settings.impostorCells = look.impostorCells;
     if (!cameras.empty())
       written = writeSequence(renderer, scene, settings, cameras, options, result.stats);
     else
