@@ -84,6 +84,10 @@ def check_render(binary, cwd):
     check(value["draw_calls"] == int(printed.group(2)),
           f"render: draw_calls {value['draw_calls']} != {printed.group(2)}")
     check(value["scene"] == "teapot", f"render: scene {value['scene']!r}")
+    check((value["billboard_copies"], value["trimmed_copies"]) == (0, 0),
+          f"render: the teapot has no billboards, counted {value['billboard_copies']}")
+    check(value["settings"]["billboard_outline"] == "trimmed",
+          f"render: billboard_outline {value['settings']['billboard_outline']!r}")
     settings = value["settings"]
     check((settings["width"], settings["height"]) == (64, 36), f"render: size {settings}")
     check(settings["mode"] == "gouraud" and settings["frames"] == 3 and settings["shadows"] == "off",
