@@ -7,6 +7,7 @@
 #include <cstring>
 #include <optional>
 
+#include "core/scene/billboard_outline.h"
 #include "core/scene/procedural_textures.h"
 #include "core/scene/scene_json.h"
 #include "core/scene/texture.h"
@@ -298,6 +299,31 @@ TEST_F(BillboardImages, MultisampledAndAnisotropicFramesDrawQuads) {
   settings = small();
   settings.textures.filterOverride = TextureFilter::Anisotropic;
   EXPECT_EQ(renderer().renderToImage(scene, settings).stats.trimmedInstances, 0u);
+}
+
+// Outlines are computed for at most kMaxOutlineSets (texture, wrap,
+// cut-off) sets a scene: 65 billboards of one texture with 65 cut-offs
+// trim all but the last.
+TEST_F(BillboardImages, OutlinesStopAtTheLimit) {
+  std::string objects;
+  for (size_t i = 0; i <= kMaxOutlineSets; ++i) {
+    float x = -3.9f + 0.6f * float(i % 13), y = -1.2f + 0.6f * float(i / 13);
+    objects += std::string(i ? ", " : "") +
+               R"({"shape": "billboard", "kind": "screen", "size": [0.5, 0.5], "material": "tree",
+                  "alpha_cutoff": )" +
+               std::to_string(0.3f + 0.004f * float(i)) + R"(, "transform": [{"translate": [)" +
+               std::to_string(x) + ", " + std::to_string(y) + ", -10]}]}";
+  }
+  Scene scene = parseSceneJson(
+      R"({"camera": {"eye": [0, 0, 0], "at": [0, 0, -1], "fovy": 50},
+          "materials": {"tree": {"diffuse_map": {"procedural": "tree", "size": 64},
+            "sampler": {"wrap_u": "clamp_to_edge", "wrap_v": "clamp_to_edge"}}},
+          "objects": [)" +
+          objects + "]}",
+      "many.json");
+  RenderResult result = renderer().renderToImage(scene, small());
+  EXPECT_EQ(result.stats.billboardInstances, kMaxOutlineSets + 1);
+  EXPECT_EQ(result.stats.trimmedInstances, kMaxOutlineSets);
 }
 
 }  // namespace

@@ -144,7 +144,7 @@ TEST(BillboardOutline, OpaqueTextureKeepsTheQuad) {
   ASSERT_EQ(outlines.size(), 5u);
   for (const auto& outline : outlines) EXPECT_FALSE(outline);
   // Not examined: too large a side.
-  Texture large = alphaTexture(kMaxOutlineTextureSide * 2, 1, {});
+  Texture large = alphaTexture(kMaxOutlineTextureSide + 1, 1, {});
   EXPECT_TRUE(billboardOutlines(large, clamped(), 0.5f).empty());
 }
 

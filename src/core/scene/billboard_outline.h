@@ -44,7 +44,13 @@ struct BillboardOutline {
 // levels 0..L together: a fragment whose level of detail is at most L
 // samples no coarser level. A hull is empty when nothing can show. nullopt:
 // a side larger than kMaxOutlineTextureSide (not examined).
-inline constexpr uint32_t kMaxOutlineTextureSide = 1024;
+// Examining a 512x512 texture takes ~75 ms (a 1024 one ~0.3 s); larger
+// sprites keep the quad.
+inline constexpr uint32_t kMaxOutlineTextureSide = 512;
+// Outlines computed for at most this many (texture, wrap, cut-off) sets per
+// scene (uploadScene): a scene of many large sprites keeps quads past them
+// rather than spend seconds at upload.
+inline constexpr size_t kMaxOutlineSets = 64;
 std::optional<std::vector<std::vector<glm::vec2>>> billboardAlphaHulls(const Texture& texture,
                                                                        const SamplerDesc& sampler,
                                                                        float cutoff);

@@ -239,9 +239,9 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
       texels = glm::uvec2(texture.width, texture.height);
       auto key = std::make_tuple(map.texture, map.sampler.wrapU, map.sampler.wrapV, cutoff);
       auto found = outlines.find(key);
-      if (found == outlines.end())
+      if (found == outlines.end() && outlines.size() < kMaxOutlineSets)
         found = outlines.emplace(key, billboardOutlines(texture, map.sampler, cutoff)).first;
-      trimmed = found->second;
+      if (found != outlines.end()) trimmed = found->second;
     }
     gpuScene.billboards.push_back(gpuBillboard(billboard, std::move(trimmed), texels));
     gpuScene.billboardInstances += uint32_t(billboard.instances.size());
