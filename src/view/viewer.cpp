@@ -362,6 +362,8 @@ bool Viewer::drawFrame() {
   submittedTriangles_ = counts.triangles;
   coarserDraws_ = counts.coarserDraws;
   impostors_ = counts.impostors;
+  billboardCopies_ = counts.billboardInstances;
+  trimmedCopies_ = counts.trimmedInstances;
   levelDraws_ = counts.levelDraws;
   if (settings_.lod) pushBounded(lodSelectMs_, {counts.lodSelectMs});
 

@@ -154,6 +154,8 @@ class Viewer {
   uint64_t submittedTriangles_ = 0;       // last frame, after frustum culling, per view
   uint32_t coarserDraws_ = 0;             // last frame: draws at a simplified level (--lod)
   uint32_t impostors_ = 0;                // last frame: of those, objects drawn as impostors
+  uint32_t billboardCopies_ = 0;          // last frame: billboard copies drawn
+  uint32_t trimmedCopies_ = 0;            // last frame: of those, as their outline triangles
   std::array<uint32_t, 6> levelDraws_{};  // last frame: objects per level (--lod)
   std::deque<double> lodSelectMs_;        // host time choosing the levels, the last 120 frames
   uint32_t swapchainBuilds_ = 0, outOfDate_ = 0, suboptimal_ = 0;

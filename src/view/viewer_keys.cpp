@@ -276,6 +276,10 @@ OverlayText Viewer::overlayText() const {
                              ? "; lod " + std::to_string(coarserDraws_) + " draws simplified, " +
                                    std::to_string(impostors_) + " as impostors"
                              : ""));
+  if (billboardCopies_ > 0)
+    text.status.push_back("billboards " + withThousands(billboardCopies_) + " copies, " +
+                          withThousands(trimmedCopies_) + " trimmed to one triangle" +
+                          (settings_.trimBillboards ? "" : " (--billboard-outline quad)"));
   if (settings_.lod) {
     // Objects per level, 0 in full; the last entry also counts coarser ones.
     std::string levels;
