@@ -18,12 +18,8 @@ layout(location = 5) flat in vec4 inTangent;
 
 layout(location = 0) out vec4 outColor;
 
-// The material has a normal or height map (and --bump is on): a constant,
-// since llvmpipe runs both sides of even a uniform branch, and bumpedNormal's
-// five lookups made every cut-out fragment pay for maps it did not have.
-layout(constant_id = SPEC_BILLBOARD_BUMP) const bool bumpMapped = false;
-
 void main() {
+  bool bumpMapped = hasMap(TEXTURE_NORMAL | TEXTURE_HEIGHT);
   // A trimmed copy's triangle reaches past the quad: what lies outside it
   // is not the billboard's.
   if (draw.optics.w > 0.5 && (any(lessThan(inUv, vec2(0.0))) || any(greaterThan(inUv, vec2(1.0)))))

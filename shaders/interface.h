@@ -91,8 +91,13 @@ using mat4 = glm::mat4;
 #define SPEC_MATERIAL_KD 16         // 16, 17, 18
 #define SPEC_MATERIAL_KS 19         // 19, 20, 21
 #define SPEC_MATERIAL_SHININESS 22  // n
-// Billboard pass: the draw's material has a normal or height map applied.
-#define SPEC_BILLBOARD_BUMP 23
+// Textured forward and billboard pipelines: the TEXTURE_* flags of the maps
+// the draw applies (its material's, with the frame's --bump and --mip-tint).
+// A constant, since llvmpipe runs both sides of even a uniform branch: read
+// from the push constants, every textured fragment paid for the mip-tint
+// query and the five bump lookups whether its material had them or not
+// (billboards-10000: 22.5 ms against 16.8 without, docs/PERFORMANCE.md).
+#define SPEC_TEXTURE_MAPS 23
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2
@@ -151,8 +156,9 @@ struct ObjectData {
   mat4 normalMatrix;  // inverse transpose of modelView's upper 3x3, padded to a mat4
 };
 
-// DrawConstants::object.y: which of the material's textures the textured
-// pipelines apply (set 1 always holds all three, dummies where absent).
+// DrawConstants::object.y: which of the material's textures the draw has
+// (set 1 always holds all three, dummies where absent); the host compiles
+// them, with the frame's switches, into its pipeline (SPEC_TEXTURE_MAPS).
 #define TEXTURE_DIFFUSE 1
 #define TEXTURE_NORMAL 2
 #define TEXTURE_HEIGHT 4
@@ -169,7 +175,8 @@ struct DrawConstants {
             // alpha (1 without a texture) is below it are discarded (alphaCutoff / factor alpha)
   vec4 kd;  // rgb
   vec4 ks;  // rgb, w = shininess n
-  ivec4 object;    // x = index into ObjectData[], y = TEXTURE_* flags, z = 1: receives shadows,
+  ivec4 object;    // x = index into ObjectData[], y = TEXTURE_* flags (the host's record:
+                   // shaders read SPEC_TEXTURE_MAPS), z = 1: receives shadows,
                    // w = MATERIAL_* flags
   vec4 texturing;  // xy = uv scale (repeats), z = bump scale, w = diffuse map's uv rotation
   vec4 optics;     // environment term: x = reflectivity kr, y = transparency kt, z = ior;

@@ -11,7 +11,10 @@ layout(set = 1, binding = BINDING_DIFFUSE_MAP) uniform sampler2D diffuseMap;
 layout(set = 1, binding = BINDING_NORMAL_MAP) uniform sampler2D normalMap;
 layout(set = 1, binding = BINDING_HEIGHT_MAP) uniform sampler2D heightMap;
 
-bool hasMap(int flag) { return (draw.object.y & flag) != 0; }
+// The maps this pipeline applies (SPEC_TEXTURE_MAPS): compiled in, so a
+// material without a map runs none of its code.
+layout(constant_id = SPEC_TEXTURE_MAPS) const int textureMaps = 0;
+bool hasMap(int flag) { return (textureMaps & flag) != 0; }
 
 // Where to sample: the UV scaled by the material's repeats, v flipped.
 vec2 textureCoordinate(vec2 uv) {

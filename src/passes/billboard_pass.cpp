@@ -83,15 +83,24 @@ void BillboardPass::upload(const GpuScene& scene) {
   }
 }
 
-void BillboardPass::prepare(LightLayout lights, TargetLayout target, ShadowMethod shadows,
-                            bool blended, bool bumped) {
+BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const ForwardFrame& frame,
+                                                const GpuScene& scene,
+                                                const GpuBillboard& billboard) {
+  // --bump off drops bump maps, not an impostor's normals (its geometry).
+  uint32_t maps = uint32_t(billboard.constants.object.y);
+  if (billboard.impostor.atlas < 0)
+    maps = appliedTextureMaps(maps, frame);
+  else if (frame.mipTint)
+    maps |= TEXTURE_MIP_TINT;
+  return {model, scene.lights, frame.target, frame.shadows, billboard.blended, maps};
+}
+
+void BillboardPass::prepare(const GpuScene& scene, const ForwardFrame& frame) {
   for (int model = 0; model < kShadingModelCount; ++model)
-    for (bool blendedVariant : {false, true})
-      for (bool bumpedVariant : {false, true}) {
-        if ((blendedVariant && !blended) || (bumpedVariant && !bumped)) continue;
-        Variant key{ShadingModel(model), lights, target, shadows, blendedVariant, bumpedVariant};
-        if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
-      }
+    for (const GpuBillboard& billboard : scene.billboards) {
+      Variant key = variantOf(ShadingModel(model), frame, scene, billboard);
+      if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
+    }
 }
 
 Pipeline BillboardPass::createPipeline(const Variant& key) const {
@@ -104,11 +113,11 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
     int32_t shadowFilter;
     VkBool32 alphaMask;
     int32_t shadowedLights;
-    VkBool32 bumped;
+    int32_t textureMaps;
   } constants{int32_t(key.model),          int32_t(lights.point),
               int32_t(lights.directional), lights.attenuated ? VK_TRUE : VK_FALSE,
               int32_t(key.shadows),        key.blended ? VK_FALSE : VK_TRUE,
-              int32_t(lights.shadowed),    key.bumped ? VK_TRUE : VK_FALSE};
+              int32_t(lights.shadowed),    int32_t(key.textureMaps)};
   using C = decltype(constants);
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(C, shadingModel), 4},
@@ -118,7 +127,7 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
       {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(C, shadowFilter), 4},
       {/* constantID= */ SPEC_ALPHA_MASK, offsetof(C, alphaMask), 4},
       {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(C, shadowedLights), 4},
-      {/* constantID= */ SPEC_BILLBOARD_BUMP, offsetof(C, bumped), 4},
+      {/* constantID= */ SPEC_TEXTURE_MAPS, offsetof(C, textureMaps), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};
@@ -321,8 +330,7 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
 
 void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel model,
                            const ForwardFrame& frame, const GpuScene& scene,
-                           std::span<const BillboardDraw> draws, bool blended,
-                           const VkViewport& viewport) const {
+                           std::span<const BillboardDraw> draws, const VkViewport& viewport) const {
   if (draws.empty()) return;
   VkRect2D scissor{{int32_t(viewport.x), int32_t(viewport.y)},
                    {uint32_t(viewport.width), uint32_t(viewport.height)}};
@@ -350,14 +358,8 @@ void BillboardPass::record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel
                               nullptr);
     }
     gpu::DrawConstants constants = billboard.constants;
-    // --bump off drops bump maps, not an impostor's normals (its geometry).
-    if (!frame.bump && billboard.impostor.atlas < 0)
-      constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
-    if (frame.mipTint) constants.object.y |= TEXTURE_MIP_TINT;
     constants.optics.w = run.vertices == 3 ? 1.0f : 0.0f;
-    bool bumped = (constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
-    auto pipeline =
-        pipelines_.find({model, scene.lights, frame.target, frame.shadows, blended, bumped});
+    auto pipeline = pipelines_.find(variantOf(model, frame, scene, billboard));
     assert(pipeline != pipelines_.end() && "BillboardPass::prepare() not called for these draws");
     if (pipeline->second.get() != bound) {
       bound = pipeline->second.get();

@@ -79,11 +79,9 @@ class BillboardPass {
                 VkDescriptorSetLayout materialSetLayout);
   // Sizes each frame slot's instance buffer for `scene` (no frame in flight).
   void upload(const GpuScene& scene);
-  // The pipelines of every shading model for these lights, target and
-  // shadow filter; `blended` adds the blended ones, `bumped` those that
-  // apply normal and height maps.
-  void prepare(LightLayout lights, TargetLayout target, ShadowMethod shadows, bool blended,
-               bool bumped);
+  // The pipelines of every shading model that drawing `scene`'s billboards
+  // with `frame`'s settings needs (those built before are kept).
+  void prepare(const GpuScene& scene, const ForwardFrame& frame);
   // Culls each instance's bounding sphere against the frustum (unless
   // `cull` is off), moves the survivors to eye space into `frameSlot`'s
   // buffer with their outlines (`trim`) (cut-out ones per billboard in scene
@@ -98,7 +96,7 @@ class BillboardPass {
   // instances become one instanced draw.
   void record(VkCommandBuffer cmd, uint32_t frameSlot, ShadingModel model,
               const ForwardFrame& frame, const GpuScene& scene,
-              std::span<const BillboardDraw> draws, bool blended, const VkViewport& viewport) const;
+              std::span<const BillboardDraw> draws, const VkViewport& viewport) const;
 
   static constexpr uint32_t kFrameSlots = 2;  // Renderer::kFramesInFlight
 
@@ -109,10 +107,14 @@ class BillboardPass {
     TargetLayout target;
     ShadowMethod shadows;
     bool blended;
-    bool bumped;  // SPEC_BILLBOARD_BUMP
+    uint32_t textureMaps;  // SPEC_TEXTURE_MAPS
     auto operator<=>(const Variant&) const = default;
   };
   Pipeline createPipeline(const Variant& key) const;
+  // The pipeline `billboard` is drawn with under `model`: prepare() builds
+  // and record() binds exactly these.
+  static Variant variantOf(ShadingModel model, const ForwardFrame& frame, const GpuScene& scene,
+                           const GpuBillboard& billboard);
 
   const Context& context_;
   VkFormat colorFormat_;

@@ -145,6 +145,13 @@ size_t ForwardPass::materialCount(const GpuScene& scene) {
   return materials.size();
 }
 
+uint32_t appliedTextureMaps(uint32_t materialMaps, const ForwardFrame& frame) {
+  uint32_t maps = materialMaps;
+  if (!frame.bump) maps &= ~uint32_t(TEXTURE_NORMAL | TEXTURE_HEIGHT);
+  if (frame.mipTint) maps |= TEXTURE_MIP_TINT;
+  return maps;
+}
+
 ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& frame,
                                       const GpuScene& scene, const DrawItem& draw) {
   ForwardVariant variant{.model = model,
@@ -156,6 +163,7 @@ ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& fr
                          .shadows = frame.shadows,
                          .masked = draw.masked,
                          .doubleSided = draw.doubleSided};
+  if (draw.textured) variant.textureMaps = appliedTextureMaps(draw.constants.object.y, frame);
   if (frame.materialConstants) variant.material = materialBits(draw.constants);
   return variant;
 }
@@ -177,7 +185,7 @@ void ForwardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> m
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   const auto& [model, lights, target, textured, blended, wireframe, environment, shadows, masked,
-               doubleSided, material] = key;
+               doubleSided, textureMaps, material] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -190,6 +198,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
     int32_t shadowedLights;
     VkBool32 materialConstants;
     std::array<uint32_t, 10> material;  // ka.rgb, kd.rgb, ks.rgb, n: float bit patterns
+    int32_t textureMaps;
   } constants{int32_t(model),
               int32_t(lights.point),
               int32_t(lights.directional),
@@ -200,7 +209,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
               doubleSided ? VK_TRUE : VK_FALSE,
               int32_t(lights.shadowed),
               material ? VK_TRUE : VK_FALSE,
-              material.value_or(std::array<uint32_t, 10>{})};
+              material.value_or(std::array<uint32_t, 10>{}),
+              int32_t(textureMaps)};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -225,6 +235,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
       {SPEC_MATERIAL_KS + 1, offsetof(decltype(constants), material) + 28, 4},
       {SPEC_MATERIAL_KS + 2, offsetof(decltype(constants), material) + 32, 4},
       {SPEC_MATERIAL_SHININESS, offsetof(decltype(constants), material) + 36, 4},
+      {/* constantID= */ SPEC_TEXTURE_MAPS, offsetof(decltype(constants), textureMaps), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};
@@ -313,16 +324,6 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
                           colorFormat_, depthFormat(target.depth), layout_});
 }
 
-// A draw's constants with the frame's texture switches applied to its
-// TEXTURE_* flags (a textured draw's maps are in its flags from upload).
-static gpu::DrawConstants frameConstants(const DrawItem& draw, const ForwardFrame& frame) {
-  gpu::DrawConstants constants = draw.constants;
-  if (!draw.textured) return constants;
-  if (!frame.bump) constants.object.y &= ~(TEXTURE_NORMAL | TEXTURE_HEIGHT);
-  if (frame.mipTint) constants.object.y |= TEXTURE_MIP_TINT;
-  return constants;
-}
-
 void ForwardPass::bindFrame(VkCommandBuffer cmd, const ForwardFrame& frame, const GpuScene& scene,
                             const VkViewport& viewport) const {
   VkDescriptorSet frameSet = frame.frameSet;
@@ -359,7 +360,7 @@ void ForwardPass::record(VkCommandBuffer cmd, ShadingModel model, const ForwardF
                                 0, nullptr);
       }
     }
-    gpu::DrawConstants constants = frameConstants(draw, frame);
+    gpu::DrawConstants constants = draw.constants;
     vkCmdPushConstants(
         cmd, layout_,
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
@@ -382,7 +383,7 @@ void ForwardPass::recordWireframe(VkCommandBuffer cmd, const ForwardFrame& frame
   bindFrame(cmd, frame, scene, viewport);
   for (const DrawItem& draw : draws) {
     // Unlit writes kd: every edge in one light grey, textured or not.
-    gpu::DrawConstants constants = frameConstants(draw, frame);
+    gpu::DrawConstants constants = draw.constants;
     constants.kd = glm::vec4(0.9f, 0.9f, 0.9f, 1.0f);
     vkCmdPushConstants(
         cmd, layout_,

@@ -48,6 +48,7 @@ struct ForwardVariant {
       ShadowMethod::Off;     // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
   bool masked = false;       // SPEC_ALPHA_MASK: glTF alphaMode MASK
   bool doubleSided = false;  // SPEC_DOUBLE_SIDED, no culling: glTF doubleSided
+  uint32_t textureMaps = 0;  // SPEC_TEXTURE_MAPS (textured only): appliedTextureMaps
   // SPEC_MATERIAL_CONSTANTS: the draw's ka, kd, ks and n compiled in (their
   // bit patterns) instead of read from its push constants; empty: read.
   std::optional<std::array<uint32_t, 10>> material;
@@ -67,7 +68,7 @@ struct ForwardFrame {
   std::span<const VkDescriptorSet> materialSets;
   bool environment = false;                  // the variants with the environment term
   ShadowMethod shadows = ShadowMethod::Off;  // the variants that look the shadow maps up
-  // Applied to the textured draws' TEXTURE_* push-constant flags per draw.
+  // Applied to the textured draws' TEXTURE_* flags (appliedTextureMaps).
   bool bump = true;      // false: normal and height maps ignored
   bool mipTint = false;  // diffuse texels tinted by mip level
   // Each material's values as specialization constants, a pipeline per
@@ -78,6 +79,11 @@ struct ForwardFrame {
   // constant differently: a few linear values move by one RGBA16F step.
   bool materialConstants = false;
 };
+
+// The TEXTURE_* flags a textured draw's pipeline applies (SPEC_TEXTURE_MAPS):
+// its material's maps, without the normal and height maps when the frame's
+// bump is off, with the mip-level tint when it is on.
+uint32_t appliedTextureMaps(uint32_t materialMaps, const ForwardFrame& frame);
 
 class ForwardPass {
  public:

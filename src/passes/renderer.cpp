@@ -334,15 +334,7 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   }
   forward_.prepare(scene, models, forward, settings.wireframe);
   TargetLayout layout = forward.target;
-  if (billboards) {
-    bool blended = std::any_of(scene.billboards.begin(), scene.billboards.end(),
-                               [](const GpuBillboard& billboard) { return billboard.blended; });
-    bool bumped =
-        std::any_of(scene.billboards.begin(), scene.billboards.end(), [](const GpuBillboard& b) {
-          return (b.constants.object.y & (TEXTURE_NORMAL | TEXTURE_HEIGHT)) != 0;
-        });
-    billboards_.prepare(scene.lights, layout, forward.shadows, blended, bumped);
-  }
+  if (billboards) billboards_.prepare(scene, forward);
   if (forward.environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
   settings_ = settings;
@@ -454,7 +446,7 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
     std::span<const DrawItem> opaque(draws.begin(), firstTransparent);
     std::span<const DrawItem> transparent(firstTransparent, draws.end());
     forward_.record(cmd, models[i], forwardFrame, scene, opaque, viewport);
-    billboards_.record(cmd, frameSlot(), models[i], forwardFrame, scene, billboards.cutOut, false,
+    billboards_.record(cmd, frameSlot(), models[i], forwardFrame, scene, billboards.cutOut,
                        viewport);
     if (forwardFrame.environment)
       skybox_.record(cmd, targetShape_.layout, frame.set, view, projection, viewport);
@@ -495,7 +487,7 @@ void Renderer::recordTransparent(VkCommandBuffer cmd, ShadingModel model,
            (mesh == transparent.size() || blended[quadEnd].depth < meshDepth(mesh)))
       ++quadEnd;
     billboards_.record(cmd, frameSlot(), model, forwardFrame, scene,
-                       blended.subspan(quad, quadEnd - quad), true, viewport);
+                       blended.subspan(quad, quadEnd - quad), viewport);
     quad = quadEnd;
   }
 }
