@@ -79,7 +79,7 @@ void main() {
   vec2 st = textureCoordinate(inUv);
   // The normal and height maps' coordinates (their own texture transform).
   vec2 bumpSt = st;
-  if ((draw.object.w & MATERIAL_UV_TRANSFORM) != 0) {
+  if (hasMap(TEXTURE_UV_TRANSFORM)) {
     bumpSt = transformedCoordinate(st, draw.normalUv, draw.optics.w);
     st = transformedCoordinate(st, draw.diffuseUv, draw.texturing.w);
   }

@@ -92,7 +92,8 @@ using mat4 = glm::mat4;
 #define SPEC_MATERIAL_KS 19         // 19, 20, 21
 #define SPEC_MATERIAL_SHININESS 22  // n
 // Textured forward and billboard pipelines: the TEXTURE_* flags of the maps
-// the draw applies (its material's, with the frame's --bump and --mip-tint).
+// the draw applies (its material's, with the frame's --bump and --mip-tint)
+// and whether their uv transform does.
 // A constant, since llvmpipe runs both sides of even a uniform branch: read
 // from the push constants, every textured fragment paid for the mip-tint
 // query and the five bump lookups whether its material had them or not
@@ -163,9 +164,9 @@ struct ObjectData {
 #define TEXTURE_NORMAL 2
 #define TEXTURE_HEIGHT 4
 #define TEXTURE_MIP_TINT 8  // debug: replace the diffuse texel by its mip level's colour
-// DrawConstants::object.w: the textures' KHR_texture_transform (diffuseUv,
-// normalUv and the rotations) applies; without it st is used as is.
-#define MATERIAL_UV_TRANSFORM 1
+// The textures' KHR_texture_transform (diffuseUv, normalUv and the
+// rotations) applies; without it st is used as is.
+#define TEXTURE_UV_TRANSFORM 16
 
 // Per draw, as push constants: the material and the object's index. Fragment
 // shaders read the material from here, never from the storage buffer (on
@@ -176,8 +177,7 @@ struct DrawConstants {
   vec4 kd;  // rgb
   vec4 ks;  // rgb, w = shininess n
   ivec4 object;    // x = index into ObjectData[], y = TEXTURE_* flags (the host's record:
-                   // shaders read SPEC_TEXTURE_MAPS), z = 1: receives shadows,
-                   // w = MATERIAL_* flags
+                   // shaders read SPEC_TEXTURE_MAPS), z = 1: receives shadows, w unused
   vec4 texturing;  // xy = uv scale (repeats), z = bump scale, w = diffuse map's uv rotation
   vec4 optics;     // environment term: x = reflectivity kr, y = transparency kt, z = ior;
                    // w = normal (and height) map's uv rotation

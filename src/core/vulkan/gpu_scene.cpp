@@ -173,14 +173,14 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     // kd.w is the opacity the fragment shaders write as alpha.
     draw.constants.kd = glm::vec4(material.kd, 1.0f - material.transparency);
     draw.constants.ks = glm::vec4(material.ks, material.shininess);
-    int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
-                   (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
-                   (material.heightMap.present() ? TEXTURE_HEIGHT : 0);
     const UvTransform& diffuseUv = material.diffuseMap.transform;
     const UvTransform& normalUv = material.normalMap.transform;
     bool uvTransform = !diffuseUv.identity() || !normalUv.identity();
-    draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0,
-                                       uvTransform ? MATERIAL_UV_TRANSFORM : 0);
+    int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
+                   (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
+                   (material.heightMap.present() ? TEXTURE_HEIGHT : 0) |
+                   (uvTransform ? TEXTURE_UV_TRANSFORM : 0);
+    draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0, 0);
     draw.castsShadows = object.castsShadows;
     draw.instanceGroup = object.instanceGroup;
     // The largest factor the transform stretches a length by.
