@@ -95,10 +95,11 @@ BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const Forwar
   return {model, scene.lights, frame.target, frame.shadows, billboard.blended, maps};
 }
 
-void BillboardPass::prepare(const GpuScene& scene, const ForwardFrame& frame) {
-  for (int model = 0; model < kShadingModelCount; ++model)
+void BillboardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> models,
+                            const ForwardFrame& frame) {
+  for (ShadingModel model : models)
     for (const GpuBillboard& billboard : scene.billboards) {
-      Variant key = variantOf(ShadingModel(model), frame, scene, billboard);
+      Variant key = variantOf(model, frame, scene, billboard);
       if (!pipelines_.count(key)) pipelines_[key] = createPipeline(key);
     }
 }

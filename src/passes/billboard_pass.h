@@ -79,9 +79,10 @@ class BillboardPass {
                 VkDescriptorSetLayout materialSetLayout);
   // Sizes each frame slot's instance buffer for `scene` (no frame in flight).
   void upload(const GpuScene& scene);
-  // The pipelines of every shading model that drawing `scene`'s billboards
+  // The pipelines that drawing `scene`'s billboards under each of `models`
   // with `frame`'s settings needs (those built before are kept).
-  void prepare(const GpuScene& scene, const ForwardFrame& frame);
+  void prepare(const GpuScene& scene, std::span<const ShadingModel> models,
+               const ForwardFrame& frame);
   // Culls each instance's bounding sphere against the frustum (unless
   // `cull` is off), moves the survivors to eye space into `frameSlot`'s
   // buffer with their outlines (`trim`) (cut-out ones per billboard in scene

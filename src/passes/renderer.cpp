@@ -334,7 +334,7 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   }
   forward_.prepare(scene, models, forward, settings.wireframe);
   TargetLayout layout = forward.target;
-  if (billboards) billboards_.prepare(scene, forward);
+  if (billboards) billboards_.prepare(scene, models, forward);
   if (forward.environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
   settings_ = settings;
