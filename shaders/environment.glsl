@@ -12,6 +12,7 @@
 
 layout(set = 0, binding = BINDING_ENVIRONMENT) uniform samplerCube environmentMap;
 layout(constant_id = SPEC_ENVIRONMENT) const bool environmentEnabled = false;
+layout(constant_id = SPEC_ENVIRONMENT_REFRACTS) const bool environmentRefracts = false;
 
 vec3 reflectionDirection(vec3 N, vec3 V) { return 2.0 * dot(N, V) * N - V; }
 
@@ -55,8 +56,8 @@ EnvironmentDirections environmentDirections(vec3 position, vec3 normal, float io
 vec3 environmentColor(EnvironmentDirections directions, float kr, float kt) {
   vec3 reflected = texture(environmentMap, directions.reflected.xyz).rgb;
   vec3 color = kr * reflected;
-  // Uniform branch (push constants): opaque mirrors skip the second lookup.
-  if (kt > 0.0) {
+  // Opaque mirrors have no refraction code at all (SPEC_ENVIRONMENT_REFRACTS).
+  if (environmentRefracts && kt > 0.0) {
     float F = directions.reflected.w;
     vec3 transmitted = texture(environmentMap, directions.refracted.xyz).rgb;
     color += kt * (F * reflected + (1.0 - F) * transmitted);

@@ -99,6 +99,11 @@ using mat4 = glm::mat4;
 // query and the five bump lookups whether its material had them or not
 // (billboards-10000: 22.5 ms against 16.8 without, docs/PERFORMANCE.md).
 #define SPEC_TEXTURE_MAPS 23
+// With the environment term: the draw is transparent (kt > 0) and looks the
+// cube up along T as well. A constant for the same reason: as a branch on
+// kt every reflecting fragment paid for the refraction and its second
+// lookup (env: 25-26 ms against 21-22 ms, docs/PERFORMANCE.md).
+#define SPEC_ENVIRONMENT_REFRACTS 24
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2

@@ -160,6 +160,7 @@ ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& fr
                          .textured = draw.textured,
                          .blended = draw.transparent,
                          .environment = frame.environment,
+                         .refracts = frame.environment && draw.constants.optics.y > 0.0f,
                          .shadows = frame.shadows,
                          .masked = draw.masked,
                          .doubleSided = draw.doubleSided};
@@ -184,8 +185,8 @@ void ForwardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> m
 }
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
-  const auto& [model, lights, target, textured, blended, wireframe, environment, shadows, masked,
-               doubleSided, textureMaps, material] = key;
+  const auto& [model, lights, target, textured, blended, wireframe, environment, refracts, shadows,
+               masked, doubleSided, textureMaps, material] = key;
   struct {
     int32_t shadingModel;
     int32_t pointLights;
@@ -199,6 +200,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
     VkBool32 materialConstants;
     std::array<uint32_t, 10> material;  // ka.rgb, kd.rgb, ks.rgb, n: float bit patterns
     int32_t textureMaps;
+    VkBool32 refracts;
   } constants{int32_t(model),
               int32_t(lights.point),
               int32_t(lights.directional),
@@ -210,7 +212,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
               int32_t(lights.shadowed),
               material ? VK_TRUE : VK_FALSE,
               material.value_or(std::array<uint32_t, 10>{}),
-              int32_t(textureMaps)};
+              int32_t(textureMaps),
+              refracts ? VK_TRUE : VK_FALSE};
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
@@ -236,6 +239,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
       {SPEC_MATERIAL_KS + 2, offsetof(decltype(constants), material) + 32, 4},
       {SPEC_MATERIAL_SHININESS, offsetof(decltype(constants), material) + 36, 4},
       {/* constantID= */ SPEC_TEXTURE_MAPS, offsetof(decltype(constants), textureMaps), 4},
+      {/* constantID= */ SPEC_ENVIRONMENT_REFRACTS, offsetof(decltype(constants), refracts), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};

@@ -44,6 +44,7 @@ struct ForwardVariant {
   bool blended = false;      // transparent draws: "over" blending, no depth writes
   bool wireframe = false;    // polygonMode LINE, depth-biased towards the eye
   bool environment = false;  // SPEC_ENVIRONMENT: reflection and refraction of the cube
+  bool refracts = false;     // SPEC_ENVIRONMENT_REFRACTS: with the environment, kt > 0
   ShadowMethod shadows =
       ShadowMethod::Off;     // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
   bool masked = false;       // SPEC_ALPHA_MASK: glTF alphaMode MASK
