@@ -18,6 +18,8 @@ layout(location = 5) flat in vec4 inTangent;
 
 layout(location = 0) out vec4 outColor;
 
+layout(constant_id = SPEC_BILLBOARD_KIND) const int kind = BILLBOARD_CYLINDRICAL;
+
 void main() {
   bool bumpMapped = hasMap(TEXTURE_NORMAL | TEXTURE_HEIGHT);
   // A trimmed copy's triangle reaches past the quad: what lies outside it
@@ -43,7 +45,7 @@ void main() {
     // An impostor's texel lies off the quad by the height its atlas keeps
     // (impostor_capture.frag): lit and shadowed there, where the surface is.
     vec3 position = inPosition;
-    if (bumpMapped && int(draw.optics.x) == BILLBOARD_IMPOSTOR) {
+    if (bumpMapped && kind == BILLBOARD_IMPOSTOR) {
       float height = ((texture(normalMap, st).a * 255.0 - 1.0) / 254.0) * 2.0 - 1.0;
       position += normalize(inNormal) * height * inTangent.w;
     }

@@ -3,7 +3,7 @@
 // vertex buffer. The instance's anchor and up come in eye space
 // (BillboardInstance, written per frame by the host); the quad's corners are
 // built here, in eye space, so the quad is a real surface with real depth
-// and meets the ground where it stands. Kinds (DrawConstants::optics.x):
+// and meets the ground where it stands. Kinds (SPEC_BILLBOARD_KIND):
 //   screen       right = x_eye, up = y_eye: parallel to the image plane;
 //   spherical    normal towards the eye point, right = up x normal: faces the
 //                viewer wherever it stands, tilting as the eye rises;
@@ -16,6 +16,8 @@
 // optics.w = 1: each copy is its outline triangle instead of the quad.
 #extension GL_GOOGLE_include_directive : require
 #include "lighting.glsl"
+
+layout(constant_id = SPEC_BILLBOARD_KIND) const int kind = BILLBOARD_CYLINDRICAL;
 
 layout(set = 2, binding = BINDING_BILLBOARD_INSTANCES, std430) readonly buffer InstanceBlock {
   BillboardInstance instances[];
@@ -36,7 +38,6 @@ vec3 anyPerpendicular(vec3 axis) {
 void main() {
   BillboardInstance instance = instances[gl_InstanceIndex];
   vec3 anchor = instance.centre.xyz;
-  int kind = int(draw.optics.x);
   vec3 right, up, normal;
   if (kind == BILLBOARD_SCREEN) {
     right = vec3(1.0, 0.0, 0.0);

@@ -40,8 +40,9 @@ using mat4 = glm::mat4;
 // instances (BillboardInstance[], eye space), indexed by gl_InstanceIndex.
 #define BINDING_BILLBOARD_INSTANCES 0
 
-// Billboard kinds (DrawConstants::optics.x of a billboard draw): how the quad
-// turns towards the viewer (passes/billboard_pass.h).
+// Billboard kinds (SPEC_BILLBOARD_KIND and DrawConstants::optics.x of a
+// billboard draw): how the quad turns towards the viewer
+// (passes/billboard_pass.h).
 #define BILLBOARD_SCREEN 0       // parallel to the image plane
 #define BILLBOARD_SPHERICAL 1    // facing the eye point, its up kept near BillboardInstance::up
 #define BILLBOARD_CYLINDRICAL 2  // turning about BillboardInstance::up only
@@ -104,6 +105,9 @@ using mat4 = glm::mat4;
 // kt every reflecting fragment paid for the refraction and its second
 // lookup (env: 25-26 ms against 21-22 ms, docs/PERFORMANCE.md).
 #define SPEC_ENVIRONMENT_REFRACTS 24
+// Billboard pass: the draw's BILLBOARD_* kind (DrawConstants::optics.x
+// holds it too, for the host).
+#define SPEC_BILLBOARD_KIND 25
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2

@@ -92,7 +92,13 @@ BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const Forwar
     maps = appliedTextureMaps(maps, frame);
   else if (frame.mipTint)
     maps |= TEXTURE_MIP_TINT;
-  return {model, scene.lights, frame.target, frame.shadows, billboard.blended, maps};
+  return {model,
+          scene.lights,
+          frame.target,
+          frame.shadows,
+          billboard.blended,
+          maps,
+          int(billboard.constants.optics.x)};
 }
 
 void BillboardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> models,
@@ -115,10 +121,16 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
     VkBool32 alphaMask;
     int32_t shadowedLights;
     int32_t textureMaps;
-  } constants{int32_t(key.model),          int32_t(lights.point),
-              int32_t(lights.directional), lights.attenuated ? VK_TRUE : VK_FALSE,
-              int32_t(key.shadows),        key.blended ? VK_FALSE : VK_TRUE,
-              int32_t(lights.shadowed),    int32_t(key.textureMaps)};
+    int32_t kind;
+  } constants{int32_t(key.model),
+              int32_t(lights.point),
+              int32_t(lights.directional),
+              lights.attenuated ? VK_TRUE : VK_FALSE,
+              int32_t(key.shadows),
+              key.blended ? VK_FALSE : VK_TRUE,
+              int32_t(lights.shadowed),
+              int32_t(key.textureMaps),
+              key.kind};
   using C = decltype(constants);
   VkSpecializationMapEntry entries[] = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(C, shadingModel), 4},
@@ -129,6 +141,7 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
       {/* constantID= */ SPEC_ALPHA_MASK, offsetof(C, alphaMask), 4},
       {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(C, shadowedLights), 4},
       {/* constantID= */ SPEC_TEXTURE_MAPS, offsetof(C, textureMaps), 4},
+      {/* constantID= */ SPEC_BILLBOARD_KIND, offsetof(C, kind), 4},
   };
   VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
                                       &constants};

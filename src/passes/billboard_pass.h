@@ -109,6 +109,7 @@ class BillboardPass {
     ShadowMethod shadows;
     bool blended;
     uint32_t textureMaps;  // SPEC_TEXTURE_MAPS
+    int kind;              // SPEC_BILLBOARD_KIND
     auto operator<=>(const Variant&) const = default;
   };
   Pipeline createPipeline(const Variant& key) const;
