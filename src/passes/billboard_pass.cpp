@@ -87,11 +87,9 @@ BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const Forwar
                                                 const GpuScene& scene,
                                                 const GpuBillboard& billboard) {
   // --bump off drops bump maps, not an impostor's normals (its geometry).
-  uint32_t maps = uint32_t(billboard.constants.object.y);
-  if (billboard.impostor.atlas < 0)
-    maps = appliedTextureMaps(maps, frame);
-  else if (frame.mipTint)
-    maps |= TEXTURE_MIP_TINT;
+  bool impostor = billboard.impostor.atlas >= 0;
+  uint32_t maps = appliedTextureMaps(uint32_t(billboard.constants.object.y), frame.bump || impostor,
+                                     frame.mipTint);
   return {model,
           scene.lights,
           frame.target,

@@ -145,10 +145,10 @@ size_t ForwardPass::materialCount(const GpuScene& scene) {
   return materials.size();
 }
 
-uint32_t appliedTextureMaps(uint32_t materialMaps, const ForwardFrame& frame) {
+uint32_t appliedTextureMaps(uint32_t materialMaps, bool bump, bool mipTint) {
   uint32_t maps = materialMaps;
-  if (!frame.bump) maps &= ~uint32_t(TEXTURE_NORMAL | TEXTURE_HEIGHT);
-  if (frame.mipTint) maps |= TEXTURE_MIP_TINT;
+  if (!bump) maps &= ~uint32_t(TEXTURE_NORMAL | TEXTURE_HEIGHT);
+  if (mipTint) maps |= TEXTURE_MIP_TINT;
   return maps;
 }
 
@@ -164,7 +164,8 @@ ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& fr
                          .shadows = frame.shadows,
                          .masked = draw.masked,
                          .doubleSided = draw.doubleSided};
-  if (draw.textured) variant.textureMaps = appliedTextureMaps(draw.constants.object.y, frame);
+  if (draw.textured)
+    variant.textureMaps = appliedTextureMaps(draw.constants.object.y, frame.bump, frame.mipTint);
   if (frame.materialConstants) variant.material = materialBits(draw.constants);
   return variant;
 }

@@ -82,9 +82,9 @@ struct ForwardFrame {
 };
 
 // The TEXTURE_* flags a textured draw's pipeline applies (SPEC_TEXTURE_MAPS):
-// its material's maps, without the normal and height maps when the frame's
-// bump is off, with the mip-level tint when it is on.
-uint32_t appliedTextureMaps(uint32_t materialMaps, const ForwardFrame& frame);
+// its material's maps, without the normal and height maps when `bump` is
+// off, with the mip-level tint when `mipTint` is on (ForwardFrame's switches).
+uint32_t appliedTextureMaps(uint32_t materialMaps, bool bump, bool mipTint);
 
 class ForwardPass {
  public:
