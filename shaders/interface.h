@@ -108,6 +108,16 @@ using mat4 = glm::mat4;
 // Billboard pass: the draw's BILLBOARD_* kind (DrawConstants::optics.x
 // holds it too, for the host).
 #define SPEC_BILLBOARD_KIND 25
+// The frame's ambient term and lights compiled in (ForwardFrame::lights):
+// when set, frameAmbient() and frameLight(i) (common.glsl) return these
+// constants instead of FrameData's. They are eye-space values, so only a run
+// whose camera and lights hold still uses them (Renderer::compileLights).
+// Ids 27..101 hold ambient r, g, b, then per light i (MAX_LIGHTS of them, in
+// FrameData's order) from 30 + 9 i: position (point) or direction towards
+// the light (directional) x, y, z; intensity r, g, b; attenuation a, b, c.
+#define SPEC_LIGHT_CONSTANTS 26
+#define SPEC_LIGHT_VALUES 27
+#define LIGHT_VALUE_WORDS (3 + 9 * MAX_LIGHTS)
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2

@@ -68,10 +68,10 @@ vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn
   float lengthN2 = dot(normal, normal);
   vec3 N = lengthN2 > 1e-40 && lengthN2 < 1e30 ? normal * inversesqrt(lengthN2) : vec3(0.0);
   vec3 V = safeNormalize(-position);
-  vec3 color = frame.ambient.rgb * material.ka;
-  // frame.lights holds the point lights first, then the directional ones.
+  vec3 color = frameAmbient() * material.ka;
+  // frameLight(i): the point lights first, then the directional ones.
   for (int i = 0; i < pointLightCount; ++i) {
-    GpuLight light = frame.lights[i];
+    GpuLight light = frameLight(i);
     vec3 toLight = light.position.xyz - position;
     float d2 = dot(toLight, toLight);
     // A light exactly at the surface point has no direction: it lights nothing.
@@ -88,7 +88,7 @@ vec3 illuminate(vec3 position, vec3 normal, SurfaceMaterial material, bool blinn
     color += term;
   }
   for (int i = pointLightCount; i < pointLightCount + directionalLightCount; ++i) {
-    GpuLight light = frame.lights[i];
+    GpuLight light = frameLight(i);
     // Unit length already (or zero), normalised once on the host.
     vec3 term = lightTerm(N, V, light.position.xyz, 1.0, light.intensity.rgb, material, blinn);
     if (shadowsLookedUp) term *= shadowCoefficient(i, position, N);
@@ -105,10 +105,10 @@ void illuminateEach(vec3 position, vec3 normal, SurfaceMaterial material, bool b
   float lengthN2 = dot(normal, normal);
   vec3 N = lengthN2 > 1e-40 && lengthN2 < 1e30 ? normal * inversesqrt(lengthN2) : vec3(0.0);
   vec3 V = safeNormalize(-position);
-  ambient = frame.ambient.rgb * material.ka;
+  ambient = frameAmbient() * material.ka;
   for (int i = 0; i < MAX_LIGHTS; ++i) terms[i] = vec3(0.0);
   for (int i = 0; i < pointLightCount; ++i) {
-    GpuLight light = frame.lights[i];
+    GpuLight light = frameLight(i);
     vec3 toLight = light.position.xyz - position;
     float d2 = dot(toLight, toLight);
     float inverseD = d2 > 1e-40 ? inversesqrt(d2) : 0.0;
@@ -121,7 +121,7 @@ void illuminateEach(vec3 position, vec3 normal, SurfaceMaterial material, bool b
     terms[i] = lightTerm(N, V, toLight * inverseD, attenuation, light.intensity.rgb, material, blinn);
   }
   for (int i = pointLightCount; i < pointLightCount + directionalLightCount; ++i) {
-    GpuLight light = frame.lights[i];
+    GpuLight light = frameLight(i);
     terms[i] = lightTerm(N, V, light.position.xyz, 1.0, light.intensity.rgb, material, blinn);
   }
 }

@@ -64,7 +64,7 @@ bool castsShadows(int i) {
 vec4 shadowMapCoordinates(int i, vec3 position, vec3 normal) {
   float lengthN2 = dot(normal, normal);
   vec3 N = lengthN2 > 1e-40 && lengthN2 < 1e30 ? normal * inversesqrt(lengthN2) : vec3(0.0);
-  vec3 lightPosition = frame.lights[i].position.xyz;
+  vec3 lightPosition = frameLight(i).position.xyz;
   bool point = i < pointLightCount;
   vec3 toLight = lightPosition - position;
   vec3 L = point ? toLight * inversesqrt(max(dot(toLight, toLight), 1e-40)) : lightPosition;

@@ -127,6 +127,72 @@ TEST_F(GltfRender, MaterialConstantsChangeNoMoreThanOneHalfStep) {
             100u);
 }
 
+// The frame's lights compiled into the pipelines (FrameSettings::
+// lightConstants) against lights read from the frame's uniform block: every
+// model, with textures, shadows, billboards and a scene of
+// three point lights (one attenuated) and two directional ones. As with the
+// materials, folded constants may round differently by one RGBA16F step and
+// the 8-bit image is the same. Twins: the check sees one light 1% dimmer;
+// and a camera path with lightConstants, whose lights move in eye space from
+// the second frame on, falls back to reading them (each frame the same as
+// without constants, not the first frame's lights compiled into the next).
+TEST_F(GltfRender, LightConstantsChangeNoMoreThanOneHalfStep) {
+  std::vector<Scene> scenes;
+  for (const char* name : {"default", "bump", "shadows", "trees"})
+    scenes.push_back(builtinScene(name));
+  Scene lights = builtinScene("default");
+  lights.name = "default, five lights";
+  Light point;
+  point.position = {-3.0f, 2.0f, 1.0f};
+  point.intensity = {0.4f, 0.3f, 0.2f};
+  point.attenuation = {1.0f, 0.1f, 0.02f};
+  lights.lights.push_back(point);
+  point.position = {2.0f, 4.0f, -2.0f};
+  point.attenuation = {1.0f, 0.0f, 0.0f};
+  lights.lights.push_back(point);
+  Light directional;
+  directional.type = LightType::Directional;
+  directional.direction = {0.3f, -1.0f, -0.2f};
+  directional.intensity = glm::vec3(0.25f);
+  lights.lights.push_back(directional);
+  directional.direction = {-0.5f, -0.2f, 0.4f};
+  lights.lights.push_back(directional);
+  scenes.push_back(lights);
+  for (const Scene& scene : scenes)
+    for (int model = 0; model < kShadingModelCount; ++model) {
+      RenderSettings memory{160, 90, ShadingModel(model)};
+      memory.shadows = ShadowMethod::Hard;
+      RenderSettings constants = memory;
+      constants.lightConstants = true;
+      ImageRgba a = renderer().renderToImage(scene, constants).image;
+      ImageRgba b = renderer().renderToImage(scene, memory).image;
+      std::string what = scene.name + " " + std::string(shadingModelName(ShadingModel(model)));
+      EXPECT_EQ(valuesBeyondOneHalfStep(a.pixels, b.pixels), 0u) << what;
+      EXPECT_EQ(compareImages(encodeSrgb8(a), encodeSrgb8(b)).maxDifference, 0) << what;
+    }
+  RenderSettings settings{160, 90, ShadingModel::Phong};
+  settings.lightConstants = true;
+  Scene dimmer = lights;
+  dimmer.lights[1].intensity *= 0.99f;
+  EXPECT_GT(valuesBeyondOneHalfStep(renderer().renderToImage(lights, settings).image.pixels,
+                                    renderer().renderToImage(dimmer, settings).image.pixels),
+            100u);
+
+  std::vector<Camera> path(3, lights.camera);
+  path[1].eye += glm::vec3(1.5f, 0.5f, 0.0f);
+  path[2].eye -= glm::vec3(1.0f, 0.0f, 1.0f);
+  std::vector<ImageRgba> withConstants(path.size()), without(path.size());
+  renderer().renderSequence(lights, settings, path,
+                            [&](uint32_t i, ImageRgba&& image) { withConstants[i] = image; });
+  RenderSettings reading = settings;
+  reading.lightConstants = false;
+  renderer().renderSequence(lights, reading, path,
+                            [&](uint32_t i, ImageRgba&& image) { without[i] = image; });
+  for (size_t i = 0; i < path.size(); ++i)
+    EXPECT_EQ(valuesBeyondOneHalfStep(withConstants[i].pixels, without[i].pixels), 0u)
+        << "camera " << i;
+}
+
 // The default scene with a ring of 24 spheres around the camera: those
 // behind it and off to the sides are culled. With culling on the image is
 // the same to the bit and fewer draws are made.

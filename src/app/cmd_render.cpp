@@ -271,9 +271,10 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
     // --quality chooses the shadow method and map size with the model.
     settings.shadows = options.quality ? point.shadows : look.shadows;
     settings.shadowMapSize = options.quality ? point.shadowMapSize : look.shadowMapSize;
-    settings.materialConstants =
-        look.materialConstants &&
-        (options.look.materialConstants != "auto" || settings.frames > 1 || !cameras.empty());
+    bool constants = options.look.materialConstants != "auto" || settings.frames > 1;
+    settings.materialConstants = look.materialConstants && (constants || !cameras.empty());
+    // Eye-space lights stay the same only while the camera does.
+    settings.lightConstants = look.materialConstants && constants && cameras.empty();
     settings.srgb8 = !isLinearOutput(options.output);
     if (!cameras.empty())
       written = writeSequence(renderer, scene, settings, cameras, options, result.stats);

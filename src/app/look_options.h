@@ -30,7 +30,7 @@ struct LookOptions {
   std::string filter;  // empty: each material's own sampler
   std::string bump = "on";
   bool mipTint = false;
-  // --material-constants: on, off or auto, which applyLookOptions takes as on
+  // --constants (alias --material-constants): on, off or auto, which applyLookOptions takes as on
   // and a command that draws one frame only as off (`render`: its 8-bit
   // images are the same either way, linear ones within a half-float step,
   // and a pipeline per material costs more start-up than one frame saves).

@@ -138,6 +138,7 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       BenchResult& result = results[i];
       RenderSettings settings{point.width, point.height, point.model};
       settings.frames = options.frames;
+      settings.lightConstants = true;  // one camera per run: the materials' rule applies
       settings.msaaSamples = point.msaaSamples;
       settings.textures.filterOverride = point.filter;
       settings.shadows = point.shadows;

@@ -96,7 +96,8 @@ BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const Forwar
           frame.shadows,
           billboard.blended,
           maps,
-          int(billboard.constants.optics.x)};
+          int(billboard.constants.optics.x),
+          frame.lights};
 }
 
 void BillboardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> models,
@@ -109,39 +110,29 @@ void BillboardPass::prepare(const GpuScene& scene, std::span<const ShadingModel>
 }
 
 Pipeline BillboardPass::createPipeline(const Variant& key) const {
-  const LightLayout& lights = key.lights;
   struct {
     int32_t shadingModel;
-    int32_t pointLights;
-    int32_t directionalLights;
-    VkBool32 attenuated;
     int32_t shadowFilter;
     VkBool32 alphaMask;
-    int32_t shadowedLights;
     int32_t textureMaps;
     int32_t kind;
+    LightSpecialization lights;
   } constants{int32_t(key.model),
-              int32_t(lights.point),
-              int32_t(lights.directional),
-              lights.attenuated ? VK_TRUE : VK_FALSE,
               int32_t(key.shadows),
               key.blended ? VK_FALSE : VK_TRUE,
-              int32_t(lights.shadowed),
               int32_t(key.textureMaps),
-              key.kind};
+              key.kind,
+              lightSpecialization(key.lights, key.lightValues)};
   using C = decltype(constants);
-  VkSpecializationMapEntry entries[] = {
+  std::vector<VkSpecializationMapEntry> entries = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(C, shadingModel), 4},
-      {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(C, pointLights), 4},
-      {/* constantID= */ SPEC_DIRECTIONAL_LIGHTS, offsetof(C, directionalLights), 4},
-      {/* constantID= */ SPEC_ATTENUATED_POINT_LIGHTS, offsetof(C, attenuated), 4},
       {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(C, shadowFilter), 4},
       {/* constantID= */ SPEC_ALPHA_MASK, offsetof(C, alphaMask), 4},
-      {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(C, shadowedLights), 4},
       {/* constantID= */ SPEC_TEXTURE_MAPS, offsetof(C, textureMaps), 4},
       {/* constantID= */ SPEC_BILLBOARD_KIND, offsetof(C, kind), 4},
   };
-  VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
+  appendLightEntries(entries, offsetof(C, lights));
+  VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof(constants),
                                       &constants};
   VkPipelineShaderStageCreateInfo stages[2] = {
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},

@@ -108,8 +108,9 @@ class BillboardPass {
     TargetLayout target;
     ShadowMethod shadows;
     bool blended;
-    uint32_t textureMaps;  // SPEC_TEXTURE_MAPS
-    int kind;              // SPEC_BILLBOARD_KIND
+    uint32_t textureMaps;                    // SPEC_TEXTURE_MAPS
+    int kind;                                // SPEC_BILLBOARD_KIND
+    std::optional<LightValues> lightValues;  // ForwardFrame::lights
     auto operator<=>(const Variant&) const = default;
   };
   Pipeline createPipeline(const Variant& key) const;

@@ -167,6 +167,7 @@ ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& fr
   if (draw.textured)
     variant.textureMaps = appliedTextureMaps(draw.constants.object.y, frame.bump, frame.mipTint);
   if (frame.materialConstants) variant.material = materialBits(draw.constants);
+  variant.lightValues = frame.lights;
   return variant;
 }
 
@@ -187,46 +188,34 @@ void ForwardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> m
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   const auto& [model, lights, target, textured, blended, wireframe, environment, refracts, shadows,
-               masked, doubleSided, textureMaps, material] = key;
+               masked, doubleSided, textureMaps, material, lightValues] = key;
   struct {
     int32_t shadingModel;
-    int32_t pointLights;
-    int32_t directionalLights;
-    VkBool32 attenuated;
     VkBool32 environment;
     int32_t shadowFilter;
     VkBool32 alphaMask;
     VkBool32 doubleSided;
-    int32_t shadowedLights;
     VkBool32 materialConstants;
     std::array<uint32_t, 10> material;  // ka.rgb, kd.rgb, ks.rgb, n: float bit patterns
     int32_t textureMaps;
     VkBool32 refracts;
+    LightSpecialization lights;
   } constants{int32_t(model),
-              int32_t(lights.point),
-              int32_t(lights.directional),
-              lights.attenuated ? VK_TRUE : VK_FALSE,
               environment ? VK_TRUE : VK_FALSE,
               int32_t(shadows),
               masked ? VK_TRUE : VK_FALSE,
               doubleSided ? VK_TRUE : VK_FALSE,
-              int32_t(lights.shadowed),
               material ? VK_TRUE : VK_FALSE,
               material.value_or(std::array<uint32_t, 10>{}),
               int32_t(textureMaps),
-              refracts ? VK_TRUE : VK_FALSE};
-  VkSpecializationMapEntry entries[] = {
+              refracts ? VK_TRUE : VK_FALSE,
+              lightSpecialization(lights, lightValues)};
+  std::vector<VkSpecializationMapEntry> entries = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
-      {/* constantID= */ SPEC_POINT_LIGHTS, offsetof(decltype(constants), pointLights), 4},
-      {/* constantID= */ SPEC_DIRECTIONAL_LIGHTS, offsetof(decltype(constants), directionalLights),
-       4},
-      {/* constantID= */ SPEC_ATTENUATED_POINT_LIGHTS, offsetof(decltype(constants), attenuated),
-       4},
       {/* constantID= */ SPEC_ENVIRONMENT, offsetof(decltype(constants), environment), 4},
       {/* constantID= */ SPEC_SHADOW_FILTER, offsetof(decltype(constants), shadowFilter), 4},
       {/* constantID= */ SPEC_ALPHA_MASK, offsetof(decltype(constants), alphaMask), 4},
       {/* constantID= */ SPEC_DOUBLE_SIDED, offsetof(decltype(constants), doubleSided), 4},
-      {/* constantID= */ SPEC_SHADOWED_LIGHTS, offsetof(decltype(constants), shadowedLights), 4},
       {/* constantID= */ SPEC_MATERIAL_CONSTANTS, offsetof(decltype(constants), materialConstants),
        4},
       {SPEC_MATERIAL_KA, offsetof(decltype(constants), material) + 0, 4},
@@ -242,7 +231,8 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
       {/* constantID= */ SPEC_TEXTURE_MAPS, offsetof(decltype(constants), textureMaps), 4},
       {/* constantID= */ SPEC_ENVIRONMENT_REFRACTS, offsetof(decltype(constants), refracts), 4},
   };
-  VkSpecializationInfo specialization{uint32_t(std::size(entries)), entries, sizeof(constants),
+  appendLightEntries(entries, offsetof(decltype(constants), lights));
+  VkSpecializationInfo specialization{uint32_t(entries.size()), entries.data(), sizeof(constants),
                                       &constants};
 
   std::vector<VkPipelineShaderStageCreateInfo> stages;

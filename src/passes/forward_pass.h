@@ -53,6 +53,8 @@ struct ForwardVariant {
   // SPEC_MATERIAL_CONSTANTS: the draw's ka, kd, ks and n compiled in (their
   // bit patterns) instead of read from its push constants; empty: read.
   std::optional<std::array<uint32_t, 10>> material;
+  // SPEC_LIGHT_CONSTANTS: ForwardFrame::lights compiled in; empty: read.
+  std::optional<LightValues> lightValues;
   auto operator<=>(const ForwardVariant&) const = default;
 };
 
@@ -79,6 +81,11 @@ struct ForwardFrame {
   // (docs/PERFORMANCE.md has the figures). The JIT may round a folded
   // constant differently: a few linear values move by one RGBA16F step.
   bool materialConstants = false;
+  // The frame's ambient term and eye-space lights compiled into every
+  // pipeline (SPEC_LIGHT_CONSTANTS), as the materials are; empty: read from
+  // FrameData. Values that change build new pipelines, so only a run whose
+  // camera and lights hold still sets them (Renderer::compileLights).
+  std::optional<LightValues> lights;
 };
 
 // The TEXTURE_* flags a textured draw's pipeline applies (SPEC_TEXTURE_MAPS):

@@ -1,5 +1,7 @@
 #include "passes/graphics_pipeline.h"
 
+#include <cstddef>
+
 #include "core/vulkan/vk_check.h"
 
 namespace shadelab {
@@ -39,6 +41,25 @@ Pipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& des
   VkPipeline pipeline = VK_NULL_HANDLE;
   VK_CHECK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
   return Pipeline(device, pipeline);
+}
+
+LightSpecialization lightSpecialization(const LightLayout& layout,
+                                        const std::optional<LightValues>& values) {
+  return {
+      int32_t(layout.point),    int32_t(layout.directional), layout.attenuated ? VK_TRUE : VK_FALSE,
+      int32_t(layout.shadowed), values ? VK_TRUE : VK_FALSE, values.value_or(LightValues{})};
+}
+
+void appendLightEntries(std::vector<VkSpecializationMapEntry>& entries, uint32_t offset) {
+  using L = LightSpecialization;
+  entries.push_back({SPEC_POINT_LIGHTS, uint32_t(offset + offsetof(L, pointLights)), 4});
+  entries.push_back(
+      {SPEC_DIRECTIONAL_LIGHTS, uint32_t(offset + offsetof(L, directionalLights)), 4});
+  entries.push_back({SPEC_ATTENUATED_POINT_LIGHTS, uint32_t(offset + offsetof(L, attenuated)), 4});
+  entries.push_back({SPEC_SHADOWED_LIGHTS, uint32_t(offset + offsetof(L, shadowedLights)), 4});
+  entries.push_back({SPEC_LIGHT_CONSTANTS, uint32_t(offset + offsetof(L, compiled)), 4});
+  for (uint32_t i = 0; i < LIGHT_VALUE_WORDS; ++i)
+    entries.push_back({SPEC_LIGHT_VALUES + i, uint32_t(offset + offsetof(L, values) + 4 * i), 4});
 }
 
 }  // namespace shadelab

@@ -5,8 +5,11 @@
 // make it what it is.
 #include <vulkan/vulkan.h>
 
+#include <optional>
 #include <span>
+#include <vector>
 
+#include "core/vulkan/gpu_scene.h"
 #include "core/vulkan/resources.h"
 
 namespace shadelab {
@@ -24,5 +27,23 @@ struct GraphicsPipelineDesc {
 };
 
 Pipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& desc);
+
+// The lighting specialization constants the forward and billboard pipelines
+// share (shaders/common.glsl): the light counts, whether point lights
+// attenuate, which lights cast shadows and, when `values` holds them, the
+// frame's ambient term and lights compiled in (SPEC_LIGHT_CONSTANTS).
+struct LightSpecialization {
+  int32_t pointLights;
+  int32_t directionalLights;
+  VkBool32 attenuated;
+  int32_t shadowedLights;
+  VkBool32 compiled;
+  LightValues values;
+};
+LightSpecialization lightSpecialization(const LightLayout& layout,
+                                        const std::optional<LightValues>& values);
+// Appends the map entries of a LightSpecialization that lies `offset` bytes
+// into a pipeline's specialization data.
+void appendLightEntries(std::vector<VkSpecializationMapEntry>& entries, uint32_t offset);
 
 }  // namespace shadelab

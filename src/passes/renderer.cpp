@@ -321,8 +321,6 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   bool billboards = !scene.billboards.empty();
   if (scene.anyTextured || billboards) textures_.prepareFilter(settings.textures.filterOverride);
   ForwardFrame forward = forwardFrame(scene, settings);
-  std::vector<ShadingModel> models = settings.splitModels;
-  if (models.empty()) models.push_back(settings.shadingModel);
   if (forward.shadows != ShadowMethod::Off) {
     if (shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
       context_.waitIdle();  // no frame in flight may hold the descriptors being re-pointed
@@ -332,13 +330,38 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
     // forward pipelines (the first frame of `render default` waited for it).
     shadow_.warmUp(settings.shadowDepthClamp);
   }
-  forward_.prepare(scene, models, forward, settings.wireframe);
+  settings_ = settings;
+  compiledLights_.reset();
+  lightsMoved_ = false;
+  preparedWithLights_.reset();
+  // With light constants the first frame's values are not known yet:
+  // compileLights builds the pipelines then.
+  if (!settings.lightConstants) preparePipelines(scene, forward);
   TargetLayout layout = forward.target;
-  if (billboards) billboards_.prepare(scene, models, forward);
   if (forward.environment) skybox_.prepare(layout);
   ensureTarget(settings.width, settings.height, layout);
-  settings_ = settings;
   settingsApplied_ = true;
+}
+
+void Renderer::preparePipelines(const GpuScene& scene, const ForwardFrame& forward) {
+  std::vector<ShadingModel> models = settings_.splitModels;
+  if (models.empty()) models.push_back(settings_.shadingModel);
+  forward_.prepare(scene, models, forward, settings_.wireframe);
+  if (!scene.billboards.empty()) billboards_.prepare(scene, models, forward);
+  preparedWithLights_ = forward.lights.has_value();
+}
+
+void Renderer::compileLights(const GpuScene& scene, const gpu::FrameData& frameData,
+                             ForwardFrame& forward) {
+  if (!lightsMoved_) {
+    LightValues values = lightValuesOf(frameData);
+    if (!compiledLights_) compiledLights_ = values;
+    if (*compiledLights_ == values)
+      forward.lights = values;
+    else
+      lightsMoved_ = true;  // a pipeline set per frame would cost more than it saves
+  }
+  if (preparedWithLights_ != forward.lights.has_value()) preparePipelines(scene, forward);
 }
 
 ForwardFrame Renderer::forwardFrame(const GpuScene& scene, const FrameSettings& settings) const {
@@ -399,6 +422,7 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
     std::memcpy(frame.objectData.mapped(), objects.data(), objects.size() * sizeof(objects[0]));
   ForwardFrame forwardFrame = this->forwardFrame(scene, settings);
   forwardFrame.frameSet = frame.set;
+  if (settings.lightConstants) compileLights(scene, frameData, forwardFrame);
   bool shadowed = forwardFrame.shadows != ShadowMethod::Off;
   if (scene.anyTextured || !scene.billboards.empty())
     forwardFrame.materialSets = textures_.materialSets(settings.textures.filterOverride);

@@ -90,6 +90,12 @@ struct FrameSettings {
   // off reads them from push constants. A few linear values may differ by
   // one RGBA16F step between the two (tests/test_gltf_render.cpp).
   bool materialConstants = true;
+  // The frame's ambient term and eye-space lights compiled into the forward
+  // and billboard pipelines (ForwardFrame::lights), for runs whose camera
+  // and lights hold still from frame to frame (`render --frames N`, `bench`).
+  // They are built at the first frame recorded; when a later frame's lights
+  // differ (the camera moved), every frame after it reads them from memory.
+  bool lightConstants = false;
   // Cut-out and blended billboards drawn as one triangle around what their
   // texture can show (core/scene/billboard_outline.h) instead of the quad,
   // on single-sampled targets without anisotropic filtering; off draws
@@ -270,6 +276,13 @@ class Renderer {
   // The forward pass's settings of frames drawn with `settings` (set 0 and
   // the material sets are the frame's own; recordScene fills them in).
   ForwardFrame forwardFrame(const GpuScene& scene, const FrameSettings& settings) const;
+  // Builds the forward and billboard pipelines `forward` draws with (those
+  // built before are kept).
+  void preparePipelines(const GpuScene& scene, const ForwardFrame& forward);
+  // FrameSettings::lightConstants: puts this frame's light values into
+  // `forward` while they stay those of the first frame, building the
+  // pipelines they need on the way.
+  void compileLights(const GpuScene& scene, const gpu::FrameData& frameData, ForwardFrame& forward);
   void createFrame(Frame& frame);
   void ensureObjectCapacity(Frame& frame, uint32_t count);
   // Throws InputError for settings the device cannot draw `scene` with.
@@ -327,6 +340,12 @@ class Renderer {
   std::vector<uint32_t> drawnLevels_;  // by object: the level of its last frame (--lod auto)
   FrameSettings settings_;             // as last applied
   bool settingsApplied_ = false;       // since the last upload
+  // FrameSettings::lightConstants, since the settings were applied: the
+  // values compiled in, whether a frame's differed, and which of the two
+  // sets of pipelines (with the values, without) prepare has built.
+  std::optional<LightValues> compiledLights_;
+  bool lightsMoved_ = false;
+  std::optional<bool> preparedWithLights_;
   uint32_t uploadCount_ = 0;
 };
 

@@ -3,6 +3,7 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstring>
 #include <map>
@@ -416,6 +417,21 @@ gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
     out.attenuation = glm::vec4(light.attenuation, 0.0f);
   }
   return frame;
+}
+
+LightValues lightValuesOf(const gpu::FrameData& frame) {
+  LightValues values{};
+  size_t next = 0;
+  auto put = [&](const glm::vec4& v) {
+    for (int c = 0; c < 3; ++c) values[next++] = std::bit_cast<uint32_t>(v[c]);
+  };
+  put(frame.ambient);
+  for (const gpu::GpuLight& light : frame.lights) {
+    put(light.position);
+    put(light.intensity);
+    put(light.attenuation);
+  }
+  return values;
 }
 
 ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const glm::mat4& view,

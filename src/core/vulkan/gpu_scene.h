@@ -193,6 +193,10 @@ void batchInstances(std::vector<DrawItem>& draws, std::vector<gpu::ObjectData>& 
 // first MAX_LIGHTS scene lights go in, point lights first, then directional.
 gpu::FrameData makeFrameData(const Scene& scene, const glm::mat4& view,
                              const glm::mat4& projection);
+// A frame's ambient term and lights as SPEC_LIGHT_VALUES lays them out (float
+// bit patterns; unused lights zero): what ForwardFrame::lights compiles in.
+using LightValues = std::array<uint32_t, LIGHT_VALUE_WORDS>;
+LightValues lightValuesOf(const gpu::FrameData& frame);
 // The shadow maps of one frame: what the forward pass reads (ShadowData:
 // per light its first layer and texel size, the bias, eye space to each
 // layer's clip space) and what the shadow pass draws with (world space to
