@@ -198,14 +198,27 @@ void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, in
     for (const ChartPoint& p : series.points)
       drawMarker(image, series.marker, mx(p.x), my(p.y), series.markerSize, color, clip);
   }
-  // Labels go right, left, above or below their point, wherever they overlap
-  // nothing placed before; a label with no free spot is left out.
+  // Labels go right, left, above or below their point, or off one of its
+  // corners, wherever they overlap no marker, no line and no label placed
+  // before; a label with no free spot is left out.
   std::vector<Rect> taken;
   for (const ChartSeries& series : chart.series)
     for (const ChartPoint& p : series.points) {
       int x = int(std::lround(mx(p.x))), y = int(std::lround(my(p.y)));
       int r = int(std::ceil(series.markerSize)) - 1;
       if (series.marker == Marker::Dot) taken.push_back({x - r, y - r, x + r, y + r});
+    }
+  // A line is a chain of 2-pixel boxes along it (it is drawn ~2 pixels wide).
+  for (const ChartSeries& series : chart.series)
+    for (size_t i = 0; series.connect && i + 1 < series.points.size(); ++i) {
+      double x0 = mx(series.points[i].x), y0 = my(series.points[i].y);
+      double x1 = mx(series.points[i + 1].x), y1 = my(series.points[i + 1].y);
+      int steps = int(std::ceil(std::max(std::abs(x1 - x0), std::abs(y1 - y0)) / 2.0));
+      for (int k = 0; k <= steps && steps < 10000; ++k) {
+        double t = steps ? double(k) / steps : 0.0;
+        int x = int(std::lround(x0 + (x1 - x0) * t)), y = int(std::lround(y0 + (y1 - y0) * t));
+        taken.push_back({x - 1, y - 1, x + 2, y + 2});
+      }
     }
   Rect bounds{plotLeft + 2, plotTop + 2, plotRight - 2, plotBottom - 2};
   for (const ChartSeries& series : chart.series)
@@ -215,7 +228,8 @@ void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, in
       Rect size = textRect(p.label, kPointLabelSize, 0, 0);
       int w = size.x1 - size.x0, h = size.y1 - size.y0;
       const std::pair<int, int> spots[] = {
-          {x + 9, y + h / 2}, {x - 9 - w, y + h / 2}, {x - w / 2, y - 9}, {x - w / 2, y + 9 + h}};
+          {x + 9, y + h / 2}, {x - 9 - w, y + h / 2}, {x - w / 2, y - 9}, {x - w / 2, y + 9 + h},
+          {x + 6, y - 6},     {x - 6 - w, y - 6},     {x + 6, y + 6 + h}, {x - 6 - w, y + 6 + h}};
       for (auto [left, baseline] : spots) {
         Rect rect = textRect(p.label, kPointLabelSize, left, baseline);
         rect = {rect.x0 - 1, rect.y0 - 1, rect.x1 + 1, rect.y1 + 1};
