@@ -1,6 +1,7 @@
 #include "passes/billboard_pass.h"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cstring>
 #include <glm/gtc/packing.hpp>
@@ -201,6 +202,15 @@ gpu::BillboardInstance impostorInstance(const ImpostorAtlas& atlas, const glm::m
 
 namespace {
 
+// A float's bits as an unsigned integer in the float's order (for finite
+// values and infinities): the sign bit set for positives, every bit
+// flipped for negatives.
+uint32_t orderedBits(float value) {
+  if (value == 0.0f) value = 0.0f;  // -0 and +0 compare equal: one key
+  uint32_t bits = std::bit_cast<uint32_t>(value);
+  return bits & 0x80000000u ? ~bits : bits | 0x80000000u;
+}
+
 uint32_t packCorners(glm::vec2 corner) {
   return glm::packHalf2x16(corner);
 }
@@ -242,8 +252,6 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     bool trimmed;
   };
   std::vector<Blended> blended;
-  // One billboard's cut-out copies, with depth: trimmed ones, whole ones.
-  std::vector<std::pair<float, gpu::BillboardInstance>> cutOut[2];
   glm::mat3 rotation(view);
   for (uint32_t b = 0; b < scene.billboards.size(); ++b) {
     const GpuBillboard& billboard = scene.billboards[b];
@@ -254,8 +262,10 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     glm::vec3 rise = kind == BILLBOARD_SCREEN ? glm::vec3(0, 1, 0) : up;
     bool trims = trim.enabled && !billboard.outlines.empty() &&
                  trim.filterOverride.value_or(billboard.filter) != TextureFilter::Anisotropic;
-    cutOut[0].clear();
-    cutOut[1].clear();
+    for (int whole = 0; whole < 2; ++whole) {
+      cutOutCopies_[whole].clear();
+      cutOutKeys_[whole].clear();
+    }
     for (const BillboardPlacement& placement : billboard.instances) {
       // Any corner lies within the diagonal of the anchor, whichever way the quad turns.
       float radius = glm::length(placement.size);
@@ -282,21 +292,26 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
         }
       }
       float centreZ = instance.centre.z + rise.z * (0.5f - anchor) * placement.size.y;
-      if (billboard.blended)
+      if (billboard.blended) {
         blended.push_back({centreZ, b, instance, trimmed});
-      else
-        cutOut[trimmed ? 0 : 1].emplace_back(centreZ, instance);
+      } else {
+        int whole = trimmed ? 0 : 1;
+        uint32_t index = uint32_t(cutOutCopies_[whole].size());
+        cutOutCopies_[whole].push_back(instance);
+        cutOutKeys_[whole].push_back(uint64_t(~orderedBits(centreZ)) << 32 | index);
+      }
     }
     // Cut-out copies front to back (the largest eye-space z is the nearest):
     // the depth test then rejects the fragments of the trees behind before
     // their shading runs. In scatter order, the 3,000 trees of a first draft
-    // of `lod` cost ~46 ms of a 1280x720 frame, front to back ~28 ms.
+    // of `lod` cost ~46 ms of a 1280x720 frame, front to back ~28 ms. The
+    // keys sort by decreasing z, then scatter order: a stable sort's order,
+    // at 8 bytes a key instead of the 64-byte copies.
     for (int whole = 0; whole < 2; ++whole) {
-      std::vector<std::pair<float, gpu::BillboardInstance>>& copies = cutOut[whole];
-      std::stable_sort(copies.begin(), copies.end(),
-                       [](const auto& a, const auto& b) { return a.first > b.first; });
-      BillboardDraw draw{b, result.instances, uint32_t(copies.size()), 0.0f, whole ? 6u : 3u};
-      for (const auto& [z, instance] : copies) out[result.instances++] = instance;
+      std::vector<uint64_t>& keys = cutOutKeys_[whole];
+      std::sort(keys.begin(), keys.end());
+      BillboardDraw draw{b, result.instances, uint32_t(keys.size()), 0.0f, whole ? 6u : 3u};
+      for (uint64_t key : keys) out[result.instances++] = cutOutCopies_[whole][uint32_t(key)];
       if (draw.instanceCount > 0) result.cutOut.push_back(draw);
       if (!whole) result.trimmed += draw.instanceCount;
     }

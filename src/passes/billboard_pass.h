@@ -128,6 +128,10 @@ class BillboardPass {
   Buffer instances_[kFrameSlots];  // BillboardInstance[], host-visible
   VkDescriptorSet sets_[kFrameSlots] = {};
   std::map<Variant, Pipeline> pipelines_;
+  // prepareFrame's scratch, kept so that a frame allocates nothing: one
+  // billboard's cut-out copies, trimmed and whole, and their sort keys.
+  std::vector<gpu::BillboardInstance> cutOutCopies_[2];
+  std::vector<uint64_t> cutOutKeys_[2];
 };
 
 }  // namespace shadelab
