@@ -138,7 +138,8 @@ std::vector<BenchResult> runBenchmark(Renderer& renderer, const Scene& scene,
       BenchResult& result = results[i];
       RenderSettings settings{point.width, point.height, point.model};
       settings.frames = options.frames;
-      settings.lightConstants = true;  // one camera per run: the materials' rule applies
+      // One camera per run; built at the first frame, so not for a single one.
+      settings.lightConstants = options.frames > 1;
       settings.msaaSamples = point.msaaSamples;
       settings.textures.filterOverride = point.filter;
       settings.shadows = point.shadows;

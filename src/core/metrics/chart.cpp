@@ -213,8 +213,11 @@ void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, in
     for (size_t i = 0; series.connect && i + 1 < series.points.size(); ++i) {
       double x0 = mx(series.points[i].x), y0 = my(series.points[i].y);
       double x1 = mx(series.points[i + 1].x), y1 = my(series.points[i + 1].y);
-      int steps = int(std::ceil(std::max(std::abs(x1 - x0), std::abs(y1 - y0)) / 2.0));
-      for (int k = 0; k <= steps && steps < 10000; ++k) {
+      // A point off a log axis maps to an infinity or NaN: no line to avoid.
+      double length = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
+      if (!(length < 20000.0)) continue;
+      int steps = int(std::ceil(length / 2.0));
+      for (int k = 0; k <= steps; ++k) {
         double t = steps ? double(k) / steps : 0.0;
         int x = int(std::lround(x0 + (x1 - x0) * t)), y = int(std::lround(y0 + (y1 - y0) * t));
         taken.push_back({x - 1, y - 1, x + 2, y + 2});
