@@ -28,6 +28,26 @@ uint64_t pixelsUnlike(const ImageU8& image, glm::u8vec4 colour) {
 
 using GltfRender = GpuTest;
 
+// Every scene in every model with shadows, drawn with `memory`'s settings
+// and with `compiled`'s switch on: no linear value more than one RGBA16F
+// step apart, the 8-bit images the same.
+void expectOneHalfStepApart(Renderer& renderer, const std::vector<Scene>& scenes,
+                            void (*compiled)(RenderSettings&, bool)) {
+  for (const Scene& scene : scenes)
+    for (int model = 0; model < kShadingModelCount; ++model) {
+      RenderSettings on{160, 90, ShadingModel(model)};
+      on.shadows = ShadowMethod::Hard;
+      RenderSettings off = on;
+      compiled(on, true);
+      compiled(off, false);
+      ImageRgba a = renderer.renderToImage(scene, on).image;
+      ImageRgba b = renderer.renderToImage(scene, off).image;
+      std::string what = scene.name + " " + std::string(shadingModelName(ShadingModel(model)));
+      EXPECT_EQ(valuesBeyondOneHalfStep(a.pixels, b.pixels), 0u) << what;
+      EXPECT_EQ(compareImages(encodeSrgb8(a), encodeSrgb8(b)).maxDifference, 0) << what;
+    }
+}
+
 TEST_F(GltfRender, EverySharedModelRendersInView) {
   std::vector<std::filesystem::path> models = sharedModels();
   if (models.empty()) GTEST_SKIP() << "no models in " << sharedAssetsDir();
@@ -106,18 +126,9 @@ TEST_F(GltfRender, MaterialConstantsChangeNoMoreThanOneHalfStep) {
     scenes.push_back(builtinScene(name));
   if (std::filesystem::exists(sharedAssetsDir() / "models"))
     scenes.push_back(sharedModel("color_teapot_spheres.gltf"));
-  for (const Scene& scene : scenes)
-    for (int model = 0; model < kShadingModelCount; ++model) {
-      RenderSettings constants{160, 90, ShadingModel(model)};
-      constants.shadows = ShadowMethod::Hard;
-      RenderSettings memory = constants;
-      memory.materialConstants = false;
-      ImageRgba a = renderer().renderToImage(scene, constants).image;
-      ImageRgba b = renderer().renderToImage(scene, memory).image;
-      std::string what = scene.name + " " + std::string(shadingModelName(ShadingModel(model)));
-      EXPECT_EQ(valuesBeyondOneHalfStep(a.pixels, b.pixels), 0u) << what;
-      EXPECT_EQ(compareImages(encodeSrgb8(a), encodeSrgb8(b)).maxDifference, 0) << what;
-    }
+  expectOneHalfStepApart(renderer(), scenes, [](RenderSettings& settings, bool on) {
+    settings.materialConstants = on;
+  });
   Scene darker = builtinScene("default");
   darker.objects[1].material.kd *= 0.99f;
   RenderSettings settings{160, 90, ShadingModel::Phong};
@@ -158,18 +169,8 @@ TEST_F(GltfRender, LightConstantsChangeNoMoreThanOneHalfStep) {
   directional.direction = {-0.5f, -0.2f, 0.4f};
   lights.lights.push_back(directional);
   scenes.push_back(lights);
-  for (const Scene& scene : scenes)
-    for (int model = 0; model < kShadingModelCount; ++model) {
-      RenderSettings memory{160, 90, ShadingModel(model)};
-      memory.shadows = ShadowMethod::Hard;
-      RenderSettings constants = memory;
-      constants.lightConstants = true;
-      ImageRgba a = renderer().renderToImage(scene, constants).image;
-      ImageRgba b = renderer().renderToImage(scene, memory).image;
-      std::string what = scene.name + " " + std::string(shadingModelName(ShadingModel(model)));
-      EXPECT_EQ(valuesBeyondOneHalfStep(a.pixels, b.pixels), 0u) << what;
-      EXPECT_EQ(compareImages(encodeSrgb8(a), encodeSrgb8(b)).maxDifference, 0) << what;
-    }
+  expectOneHalfStepApart(renderer(), scenes,
+                         [](RenderSettings& settings, bool on) { settings.lightConstants = on; });
   RenderSettings settings{160, 90, ShadingModel::Phong};
   settings.lightConstants = true;
   Scene dimmer = lights;
