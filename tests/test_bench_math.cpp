@@ -75,6 +75,44 @@ TEST(Chart, DrawsEachSeriesInItsColourOnWhitePaper) {
   EXPECT_LT(pixelsOfColor(drawChart(without, 600, 400), glm::vec3(0, 0, 1)), 1u);
 }
 
+// A point label keeps off the lines: on a flat line (bench's "--lod off"
+// reference line) the label of its first point used to sit across the line.
+// The twins: without the line boxes the label lands on the line (onLine
+// 178 pixels, checked by hand); and the chart does draw the label.
+TEST(Chart, PointLabelsKeepOffTheLines) {
+  Chart chart{"title", "subtitle", {"x"}, {"y"}};
+  // The line's first point on the left edge: the label fits only right of it or off a corner.
+  chart.series.push_back(
+      {"flat", glm::vec3(1, 0, 0), {{0, 1, "--lod off: 9.0 ms"}, {10, 1, ""}}, true});
+  chart.series.push_back({"range", glm::vec3(0, 0, 1), {{5, 0, ""}, {5, 2, ""}}});
+  auto dark = [](glm::u8vec4 p) { return p.r < 120 && p.g < 120 && p.b < 120; };
+  ImageU8 image = drawChart(chart, 600, 400);
+  // The line's row: the one with the most red pixels; its extent in x.
+  uint32_t row = 0, most = 0;
+  for (uint32_t y = 0; y < image.height; ++y) {
+    uint32_t red = 0;
+    for (uint32_t x = 0; x < image.width; ++x) red += image.at(x, y) == glm::u8vec4(255, 0, 0, 255);
+    if (red > most) most = red, row = y;
+  }
+  ASSERT_GT(most, 100u);
+  uint32_t left = image.width, right = 0;
+  for (uint32_t x = 0; x < image.width; ++x)
+    if (image.at(x, row) == glm::u8vec4(255, 0, 0, 255)) left = std::min(left, x), right = x;
+  size_t onLine = 0;
+  for (uint32_t y = row - 4; y <= row + 4; ++y)
+    for (uint32_t x = left; x <= right; ++x) onLine += dark(image.at(x, y));
+  EXPECT_EQ(onLine, 0u);
+  auto darkPixels = [&](const ImageU8& picture) {
+    size_t count = 0;
+    for (uint32_t y = 0; y < picture.height; ++y)
+      for (uint32_t x = 0; x < picture.width; ++x) count += dark(picture.at(x, y));
+    return count;
+  };
+  Chart unlabelled = chart;
+  unlabelled.series[0].points[0].label.clear();
+  EXPECT_GT(darkPixels(image), darkPixels(drawChart(unlabelled, 600, 400)) + 50);
+}
+
 // The bench of assets/scenes/peer-shading.json at 800x600 aborted inside
 // OpenImageIO: its RMSE range (2.26 to 16.1) gave a tick above the plot,
 // whose label landed off the image. Every such range must draw.
