@@ -110,7 +110,8 @@ TEST_F(TextureUpload, OddSizeCheckerShowsTheBlitChainsBias) {
 }
 
 TEST_F(TextureUpload, SamplersAreCreatedOncePerDescription) {
-  ForwardPass forward(context(), {});
+  LightSets lightSets;
+  ForwardPass forward(context(), {}, lightSets);
   SceneTextures textures(context(), forward.materialSetLayout());
   Scene scene = builtinScene("bump");  // three maps, one sampler description
   for (int i = 0; i < 2; ++i) {

@@ -18,8 +18,8 @@ namespace shadelab {
 
 BillboardPass::BillboardPass(const Context& context, VkFormat colorFormat,
                              VkDescriptorSetLayout frameSetLayout,
-                             VkDescriptorSetLayout materialSetLayout)
-    : context_(context), colorFormat_(colorFormat) {
+                             VkDescriptorSetLayout materialSetLayout, const LightSets& lightSets)
+    : context_(context), colorFormat_(colorFormat), lightSets_(lightSets) {
   VkDevice device = context.device();
   VkDescriptorSetLayoutBinding binding{BINDING_BILLBOARD_INSTANCES,
                                        VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
@@ -98,7 +98,7 @@ BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const Forwar
           billboard.blended,
           maps,
           int(billboard.constants.optics.x),
-          frame.lights};
+          frame.lightSet};
 }
 
 void BillboardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> models,
@@ -123,7 +123,7 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
               key.blended ? VK_FALSE : VK_TRUE,
               int32_t(key.textureMaps),
               key.kind,
-              lightSpecialization(key.lights, key.lightValues)};
+              lightSpecialization(key.lights, lightSets_.find(key.lightSet))};
   using C = decltype(constants);
   std::vector<VkSpecializationMapEntry> entries = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(C, shadingModel), 4},

@@ -75,8 +75,9 @@ struct BillboardFrame {
 
 class BillboardPass {
  public:
+  // `lightSets`: where ForwardFrame::lightSet's values are (outlives the pass).
   BillboardPass(const Context& context, VkFormat colorFormat, VkDescriptorSetLayout frameSetLayout,
-                VkDescriptorSetLayout materialSetLayout);
+                VkDescriptorSetLayout materialSetLayout, const LightSets& lightSets);
   // Sizes each frame slot's instance buffer for `scene` (no frame in flight).
   void upload(const GpuScene& scene);
   // The pipelines that drawing `scene`'s billboards under each of `models`
@@ -108,9 +109,9 @@ class BillboardPass {
     TargetLayout target;
     ShadowMethod shadows;
     bool blended;
-    uint32_t textureMaps;                    // SPEC_TEXTURE_MAPS
-    int kind;                                // SPEC_BILLBOARD_KIND
-    std::optional<LightValues> lightValues;  // ForwardFrame::lights
+    uint32_t textureMaps;  // SPEC_TEXTURE_MAPS
+    int kind;              // SPEC_BILLBOARD_KIND
+    uint32_t lightSet;     // ForwardFrame::lightSet
     auto operator<=>(const Variant&) const = default;
   };
   Pipeline createPipeline(const Variant& key) const;
@@ -121,6 +122,7 @@ class BillboardPass {
 
   const Context& context_;
   VkFormat colorFormat_;
+  const LightSets& lightSets_;
   DescriptorSetLayout instanceSetLayout_;
   PipelineLayout layout_;
   ShaderModule vertex_, fragment_;

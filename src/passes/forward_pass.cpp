@@ -18,8 +18,8 @@
 
 namespace shadelab {
 
-ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat)
-    : context_(context), colorFormat_(colorFormat) {
+ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat, const LightSets& lightSets)
+    : context_(context), colorFormat_(colorFormat), lightSets_(lightSets) {
   VkDevice device = context.device();
   VkDescriptorSetLayoutBinding bindings[] = {
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
@@ -167,7 +167,7 @@ ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& fr
   if (draw.textured)
     variant.textureMaps = appliedTextureMaps(draw.constants.object.y, frame.bump, frame.mipTint);
   if (frame.materialConstants) variant.material = materialBits(draw.constants);
-  variant.lightValues = frame.lights;
+  variant.lightSet = frame.lightSet;
   return variant;
 }
 
@@ -188,7 +188,7 @@ void ForwardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> m
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   const auto& [model, lights, target, textured, blended, wireframe, environment, refracts, shadows,
-               masked, doubleSided, textureMaps, material, lightValues] = key;
+               masked, doubleSided, textureMaps, material, lightSet] = key;
   struct {
     int32_t shadingModel;
     VkBool32 environment;
@@ -209,7 +209,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
               material.value_or(std::array<uint32_t, 10>{}),
               int32_t(textureMaps),
               refracts ? VK_TRUE : VK_FALSE,
-              lightSpecialization(lights, lightValues)};
+              lightSpecialization(lights, lightSets_.find(lightSet))};
   std::vector<VkSpecializationMapEntry> entries = {
       {/* constantID= */ SPEC_SHADING_MODEL, offsetof(decltype(constants), shadingModel), 4},
       {/* constantID= */ SPEC_ENVIRONMENT, offsetof(decltype(constants), environment), 4},

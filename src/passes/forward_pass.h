@@ -23,6 +23,7 @@
 #include "core/vulkan/gpu_scene.h"
 #include "core/vulkan/resources.h"
 #include "core/vulkan/shader_table.h"
+#include "passes/graphics_pipeline.h"
 
 namespace shadelab {
 
@@ -53,8 +54,8 @@ struct ForwardVariant {
   // SPEC_MATERIAL_CONSTANTS: the draw's ka, kd, ks and n compiled in (their
   // bit patterns) instead of read from its push constants; empty: read.
   std::optional<std::array<uint32_t, 10>> material;
-  // SPEC_LIGHT_CONSTANTS: ForwardFrame::lights compiled in; empty: read.
-  std::optional<LightValues> lightValues;
+  // SPEC_LIGHT_CONSTANTS: ForwardFrame::lightSet compiled in; 0: read.
+  uint32_t lightSet = 0;
   auto operator<=>(const ForwardVariant&) const = default;
 };
 
@@ -84,8 +85,9 @@ struct ForwardFrame {
   // The frame's ambient term and eye-space lights compiled into every
   // pipeline (SPEC_LIGHT_CONSTANTS), as the materials are; empty: read from
   // FrameData. Values that change build new pipelines, so only a run whose
-  // camera and lights hold still sets them (Renderer::compileLights).
-  std::optional<LightValues> lights;
+  // camera and lights hold still sets them (Renderer::compileLights). An id
+  // of the passes' LightSets; 0: none.
+  uint32_t lightSet = 0;
 };
 
 // The TEXTURE_* flags a textured draw's pipeline applies (SPEC_TEXTURE_MAPS):
@@ -95,7 +97,8 @@ uint32_t appliedTextureMaps(uint32_t materialMaps, bool bump, bool mipTint);
 
 class ForwardPass {
  public:
-  ForwardPass(const Context& context, VkFormat colorFormat);
+  // `lightSets`: where ForwardFrame::lightSet's values are (outlives the pass).
+  ForwardPass(const Context& context, VkFormat colorFormat, const LightSets& lightSets);
 
   VkDescriptorSetLayout descriptorSetLayout() const { return setLayout_.get(); }
   VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_.get(); }
@@ -136,6 +139,7 @@ class ForwardPass {
 
   const Context& context_;
   VkFormat colorFormat_;
+  const LightSets& lightSets_;
   DescriptorSetLayout setLayout_;
   DescriptorSetLayout materialSetLayout_;
   PipelineLayout layout_;

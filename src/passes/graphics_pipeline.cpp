@@ -1,5 +1,7 @@
 #include "passes/graphics_pipeline.h"
 
+#include <algorithm>
+#include <cassert>
 #include <cstddef>
 
 #include "core/vulkan/vk_check.h"
@@ -43,11 +45,21 @@ Pipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& des
   return Pipeline(device, pipeline);
 }
 
-LightSpecialization lightSpecialization(const LightLayout& layout,
-                                        const std::optional<LightValues>& values) {
+uint32_t LightSets::intern(const LightValues& values) {
+  auto found = std::find(sets_.begin(), sets_.end(), values);
+  if (found == sets_.end()) found = sets_.insert(sets_.end(), values);
+  return uint32_t(found - sets_.begin()) + 1;
+}
+
+const LightValues* LightSets::find(uint32_t id) const {
+  assert(id <= sets_.size() && "a light set id of another table");
+  return id == 0 ? nullptr : &sets_[id - 1];
+}
+
+LightSpecialization lightSpecialization(const LightLayout& layout, const LightValues* values) {
   return {
       int32_t(layout.point),    int32_t(layout.directional), layout.attenuated ? VK_TRUE : VK_FALSE,
-      int32_t(layout.shadowed), values ? VK_TRUE : VK_FALSE, values.value_or(LightValues{})};
+      int32_t(layout.shadowed), values ? VK_TRUE : VK_FALSE, values ? *values : LightValues{}};
 }
 
 void appendLightEntries(std::vector<VkSpecializationMapEntry>& entries, uint32_t offset) {

@@ -28,6 +28,20 @@ struct GraphicsPipelineDesc {
 
 Pipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& desc);
 
+// The sets of light values compiled into pipelines (SPEC_LIGHT_CONSTANTS),
+// each under a small id, so that a pipeline key holds and compares 4 bytes
+// instead of a set's 300 (ForwardPass and BillboardPass look a key up per
+// draw). The same values get the same id; 0 stands for none (read from
+// FrameData). Ids stay valid for the table's lifetime (the Renderer's).
+class LightSets {
+ public:
+  uint32_t intern(const LightValues& values);
+  const LightValues* find(uint32_t id) const;  // nullptr for 0
+
+ private:
+  std::vector<LightValues> sets_;  // id - 1
+};
+
 // The lighting specialization constants the forward and billboard pipelines
 // share (shaders/common.glsl): the light counts, whether point lights
 // attenuate, which lights cast shadows and, when `values` holds them, the
@@ -40,8 +54,7 @@ struct LightSpecialization {
   VkBool32 compiled;
   LightValues values;
 };
-LightSpecialization lightSpecialization(const LightLayout& layout,
-                                        const std::optional<LightValues>& values);
+LightSpecialization lightSpecialization(const LightLayout& layout, const LightValues* values);
 // Appends the map entries of a LightSpecialization that lies `offset` bytes
 // into a pipeline's specialization data.
 void appendLightEntries(std::vector<VkSpecializationMapEntry>& entries, uint32_t offset);

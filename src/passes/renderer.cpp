@@ -37,12 +37,12 @@ ImageRgba unpackHalfImage(const void* data, uint32_t width, uint32_t height) {
 
 Renderer::Renderer(const Context& context)
     : context_(context),
-      forward_(context, kColorFormat),
+      forward_(context, kColorFormat, lightSets_),
       textures_(context, forward_.materialSetLayout()),
       skybox_(context, kColorFormat, forward_.descriptorSetLayout()),
       shadow_(context, forward_.materialSetLayout()),
       billboards_(context, kColorFormat, forward_.descriptorSetLayout(),
-                  forward_.materialSetLayout()),
+                  forward_.materialSetLayout(), lightSets_),
       impostors_(context),
       environmentBuilder_(context),
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
@@ -348,7 +348,7 @@ void Renderer::preparePipelines(const GpuScene& scene, const ForwardFrame& forwa
   if (models.empty()) models.push_back(settings_.shadingModel);
   forward_.prepare(scene, models, forward, settings_.wireframe);
   if (!scene.billboards.empty()) billboards_.prepare(scene, models, forward);
-  preparedWithLights_ = forward.lights.has_value();
+  preparedWithLights_ = forward.lightSet != 0;
 }
 
 void Renderer::compileLights(const GpuScene& scene, const gpu::FrameData& frameData,
@@ -357,11 +357,11 @@ void Renderer::compileLights(const GpuScene& scene, const gpu::FrameData& frameD
     LightValues values = lightValuesOf(frameData);
     if (!compiledLights_) compiledLights_ = values;
     if (*compiledLights_ == values)
-      forward.lights = values;
+      forward.lightSet = lightSets_.intern(values);
     else
       lightsMoved_ = true;  // a pipeline set per frame would cost more than it saves
   }
-  if (preparedWithLights_ != forward.lights.has_value()) preparePipelines(scene, forward);
+  if (preparedWithLights_ != (forward.lightSet != 0)) preparePipelines(scene, forward);
 }
 
 ForwardFrame Renderer::forwardFrame(const GpuScene& scene, const FrameSettings& settings) const {

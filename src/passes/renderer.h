@@ -321,6 +321,7 @@ class Renderer {
                      const glm::mat4& view, const glm::mat4& projection, RenderStats& stats);
 
   const Context& context_;
+  LightSets lightSets_;  // every set compiled in so far, for the passes' keys
   ForwardPass forward_;
   SceneTextures textures_;
   SkyboxPass skybox_;
