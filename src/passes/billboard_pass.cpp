@@ -6,6 +6,7 @@
 #include <cstring>
 #include <glm/gtc/packing.hpp>
 
+#include "core/base/radix_sort.h"
 #include "core/scene/frustum.h"
 #include "core/scene/impostor.h"
 #include "core/vulkan/depth.h"
@@ -266,6 +267,15 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
       cutOutCopies_[whole].clear();
       cutOutKeys_[whole].clear();
     }
+    // Each level's outline as the vertex stage reads it, packed once here
+    // rather than per copy.
+    packedOutlines_.clear();
+    if (trims)
+      for (const std::optional<BillboardOutline>& outline : billboard.outlines)
+        packedOutlines_.push_back(outline ? glm::uvec4(packCorners(outline->corners[0]),
+                                                       packCorners(outline->corners[1]),
+                                                       packCorners(outline->corners[2]), 1u)
+                                          : glm::uvec4(0u));
     for (const BillboardPlacement& placement : billboard.instances) {
       // Any corner lies within the diagonal of the anchor, whichever way the quad turns.
       float radius = glm::length(placement.size);
@@ -284,10 +294,8 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
         uint32_t level = billboardLevelBound(
             {centre, right, quadUp, placement.size, billboard.texels, trim.focalPixels},
             uint32_t(billboard.outlines.size()));
-        if (const std::optional<BillboardOutline>& outline = billboard.outlines[level]) {
-          instance.outline =
-              glm::uvec4(packCorners(outline->corners[0]), packCorners(outline->corners[1]),
-                         packCorners(outline->corners[2]), 0u);
+        if (packedOutlines_[level].w) {
+          instance.outline = glm::uvec4(glm::uvec3(packedOutlines_[level]), 0u);
           trimmed = true;
         }
       }
@@ -309,7 +317,7 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     // at 8 bytes a key instead of the 64-byte copies.
     for (int whole = 0; whole < 2; ++whole) {
       std::vector<uint64_t>& keys = cutOutKeys_[whole];
-      std::sort(keys.begin(), keys.end());
+      radixSort(keys, sortScratch_);
       BillboardDraw draw{b, result.instances, uint32_t(keys.size()), 0.0f, whole ? 6u : 3u};
       for (uint64_t key : keys) out[result.instances++] = cutOutCopies_[whole][uint32_t(key)];
       if (draw.instanceCount > 0) result.cutOut.push_back(draw);

@@ -134,6 +134,8 @@ class BillboardPass {
   // billboard's cut-out copies, trimmed and whole, and their sort keys.
   std::vector<gpu::BillboardInstance> cutOutCopies_[2];
   std::vector<uint64_t> cutOutKeys_[2];
+  std::vector<uint64_t> sortScratch_;
+  std::vector<glm::uvec4> packedOutlines_;  // one billboard's, by level; w = 0: none
 };
 
 }  // namespace shadelab
