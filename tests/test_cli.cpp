@@ -110,6 +110,16 @@ TEST_F(Cli, MissingSceneFileIsAnInputError) {
   EXPECT_EQ(filesLeft(), 0u);
 }
 
+// Extensions are read in any case: MODEL.GLB and SCENE.JSON are files.
+TEST_F(Cli, SceneFileExtensionsInAnyCase) {
+  fs::copy_file(fs::path(SHADELAB_TEST_DATA_DIR) / "triangle.glb", out("MODEL.GLB"));
+  std::ofstream(out("SCENE.Json")) << R"({"objects": [{"shape": "sphere"}]})";
+  for (const char* scene : {"MODEL.GLB", "SCENE.Json"}) {
+    CommandResult r = run("render " + out(scene) + " -o " + out("a.png") + " --size 16x16");
+    EXPECT_EQ(r.exitCode, 0) << scene << ": " << r.output;
+  }
+}
+
 TEST_F(Cli, ZeroSizeIsAnInputError) {
   CommandResult r = run("render -o " + out("a.png") + " --size 0x0");
   EXPECT_EQ(r.exitCode, 2) << r.output;

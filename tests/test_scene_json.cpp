@@ -573,7 +573,7 @@ TEST(SceneJsonFile, LoadsThroughLoadSceneAndReportsBadFiles) {
   EXPECT_THAT(errorFrom([&] { loadSceneJson(missing); }),
               HasSubstr("scene file '" + missing.string() + "' does not exist"));
   EXPECT_THAT(loadError(std::filesystem::path(testing::TempDir())),
-              HasSubstr("unknown file type (no extension)"));
+              HasSubstr("is a directory, expected a .json, .gltf or .glb file"));
   std::filesystem::path emptyModel = writeTempFile("shadelab-model.gltf", "{}");
   EXPECT_THAT(loadError(emptyModel), HasSubstr(emptyModel.string() + ": invalid glTF"));
   std::filesystem::path directory = std::filesystem::path(testing::TempDir()) / "dir.json";

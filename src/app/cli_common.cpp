@@ -1,6 +1,7 @@
 #include "app/cli_common.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <regex>
 #include <sstream>
@@ -15,6 +16,22 @@ namespace {
 // is still refused by Renderer::validate, after the device is open.)
 constexpr uint32_t kMaxImageSide = 16384;
 }  // namespace
+
+CLI::Validator finiteRange(double min, double max) {
+  std::ostringstream description;
+  description << "FLOAT in [" << min << " - " << max << "]";
+  return CLI::Validator(
+      [min, max](std::string& text) -> std::string {
+        double value = 0.0;
+        // Values that are not numbers at all are CLI11's own conversion error.
+        if (!CLI::detail::lexical_cast(text, value)) return {};
+        if (std::isfinite(value) && value >= min && value <= max) return {};
+        std::ostringstream message;
+        message << "Value " << text << " not in range [" << min << " - " << max << "]";
+        return message.str();
+      },
+      description.str());
+}
 
 Size parseSize(const std::string& text, const std::string& option) {
   static const std::regex pattern(R"((\d{1,6})x(\d{1,6}))");

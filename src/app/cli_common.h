@@ -22,6 +22,10 @@ struct Size {
 // "1280x720" -> {1280, 720}; throws InputError naming the option and value.
 Size parseSize(const std::string& text, const std::string& option);
 
+// CLI::Range for a floating-point option that also refuses NaN, which passes
+// CLI::Range (every comparison with NaN is false), and infinities.
+CLI::Validator finiteRange(double min, double max);
+
 // "flat,phong" -> models, in order; throws InputError naming a bad entry.
 std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option);
 

@@ -329,7 +329,7 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("--tess", options->tessellations, "Tessellation factors, comma-separated")
       ->delimiter(',')
       ->capture_default_str()
-      ->check(CLI::Range(0.125f, 16.0f));
+      ->check(finiteRange(kMinTessellation, kMaxTessellation));
   command->add_option("--msaa", options->msaa, "Sample counts, comma-separated (1 or 4)")
       ->delimiter(',')
       ->capture_default_str()

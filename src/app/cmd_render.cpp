@@ -263,6 +263,10 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
       point.width = size.width;  // chosen for this render's size, whatever the table's
       point.height = size.height;
     }
+    // A bench table's choice may be finer than the 4x checked above.
+    if (options.quality && point.tessellation > largest)
+      checkTriangleBudget(scene, point.tessellation, global.maxTriangles,
+                          "--quality's choice " + benchPointName(point), "--max-triangles");
     if (point.tessellation != 1.0f) scene.retessellate(point.tessellation);
     settings.shadingModel = point.model;
     settings.frames = options.frames;
@@ -354,13 +358,13 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->add_option("--tess-error", options->tessellationError,
                    "Screen-space chord error bound of --tess auto, in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(0.01f, 100.0f));
+      ->check(finiteRange(0.01, 100.0));
   command
       ->add_option("--simplify", options->simplify,
                    "Simplify loaded (glTF) meshes until their error would exceed PX pixels "
                    "at this view (meshoptimizer); 0: off")
       ->capture_default_str()
-      ->check(CLI::Range(0.0f, 100.0f));
+      ->check(finiteRange(0.0, 100.0));
   command->add_option("--msaa", options->msaa, "Samples per pixel: 1 or 4")
       ->capture_default_str()
       ->check(CLI::IsMember({1u, 4u}));

@@ -89,7 +89,7 @@ class SpecReader {
         return;
       }
       std::optional<float> factor = number<float>(value);
-      if (!factor || !(*factor >= 0.125f && *factor <= 16.0f))
+      if (!factor || !(*factor >= kMinTessellation && *factor <= kMaxTessellation))
         badValue(key, value, "a factor from 0.125 to 16, or auto");
       column_.tessellation = *factor;
     } else if (key == "msaa") {

@@ -37,7 +37,7 @@ void ShadowOptions::add(CLI::App* command) {
 
 void ShadowOptions::apply(FrameSettings& settings) const {
   settings.shadows = parseNamed(kShadowMethodNames, method, "--shadows");
-  if (size < 1 || size > 65536)
+  if (size < 1 || size > int64_t(kMaxShadowMapSize))
     throw InputError("--shadow-size " + std::to_string(size) +
                      ": expected a map size from 1 to the device's largest 2D image (16384 "
                      "on lavapipe)");
@@ -93,7 +93,7 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
       ->add_option("--lod-error", options.lodError,
                    "Screen-space error bound of --lod auto, in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(0.01f, 100.0f));
+      ->check(finiteRange(0.01, 100.0));
   command
       ->add_option("--instancing", options.instancing,
                    "The visible copies of an \"instances\" block drawn as one instanced draw per "
@@ -134,8 +134,8 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
 float parseTessellationFactor(const std::string& text) {
   float factor = 0.0f;
   auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), factor);
-  if (error != std::errc() || end != text.data() + text.size() || !(factor >= 0.125f) ||
-      !(factor <= 16.0f))
+  if (error != std::errc() || end != text.data() + text.size() || !(factor >= kMinTessellation) ||
+      !(factor <= kMaxTessellation))
     throw InputError("--tess '" + text + "': expected a factor from 0.125 to 16, or auto");
   return factor;
 }

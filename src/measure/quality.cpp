@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <sstream>
 
 #include "core/base/errors.h"
+#include "core/scene/shadows.h"
 
 namespace shadelab {
 
@@ -69,23 +72,41 @@ std::vector<QualityCandidate> candidatesFromBench(const BenchTable& table,
     return valueOf(kShadowMethodNames, row[size_t(shadowsColumn - table.columns.begin())]);
   };
   std::vector<QualityCandidate> candidates;
-  try {
-    for (const std::vector<std::string>& row : table.rows) {
-      std::optional<ShadingModel> model = valueOf(kShadingModelNames, row[mode]);
-      std::optional<ShadowMethod> shadows = shadowsOf(row);
-      if (row[scene] != sceneName || !model || *model == ShadingModel::Unlit || !shadows ||
-          std::stoul(row[samples]) != msaa || row[error].empty() || !ownFilter(row))
-        continue;
-      uint32_t mapSize = kDefaultShadowMapSize;
-      if (*shadows != ShadowMethod::Off && sizeColumn != table.columns.end())
-        mapSize = uint32_t(std::stoul(row[size_t(sizeColumn - table.columns.begin())]));
-      candidates.push_back({{*model, std::stof(row[tess]), msaa, std::nullopt, *shadows, mapSize},
-                            std::stoull(row[triangles]),
-                            std::stod(row[cost]),
-                            std::stod(row[error])});
-    }
-  } catch (const std::logic_error&) {  // stoul and friends: not a number
-    throw InputError("'" + source + "': a value is not a number where one was expected");
+  for (size_t r = 0; r < table.rows.size(); ++r) {
+    const std::vector<std::string>& row = table.rows[r];
+    // A value read as a number within [low, high], or InputError naming the
+    // row, the column and the value (the file is anyone's to edit).
+    auto number = [&](size_t column, double low, double high) {
+      const std::string& text = row[column];
+      double value = std::nan("");
+      size_t used = 0;
+      try {
+        value = std::stod(text, &used);
+      } catch (const std::logic_error&) {  // not a number, or beyond a double
+      }
+      if (used != text.size() || !std::isfinite(value) || value < low || value > high) {
+        std::ostringstream expected;
+        expected << "expected a number from " << low << " to " << high;
+        throw InputError("'" + source + "' row " + std::to_string(r + 1) + ", " +
+                         table.columns[column] + " '" + text + "': " + expected.str());
+      }
+      return value;
+    };
+    std::optional<ShadingModel> model = valueOf(kShadingModelNames, row[mode]);
+    std::optional<ShadowMethod> shadows = shadowsOf(row);
+    if (row[scene] != sceneName || !model || *model == ShadingModel::Unlit || !shadows ||
+        number(samples, 1, 64) != msaa || row[error].empty() || !ownFilter(row))
+      continue;
+    uint32_t mapSize = kDefaultShadowMapSize;
+    if (*shadows != ShadowMethod::Off && sizeColumn != table.columns.end())
+      mapSize = uint32_t(number(size_t(sizeColumn - table.columns.begin()), 1, kMaxShadowMapSize));
+    // The ranges bench measures (--tess, --shadow-sizes): a choice outside
+    // them was not made by shadelab, and could cost any number of triangles.
+    candidates.push_back({{*model, float(number(tess, kMinTessellation, kMaxTessellation)), msaa,
+                           std::nullopt, *shadows, mapSize},
+                          uint64_t(number(triangles, 0, 1e15)),
+                          number(cost, 0, 1e9),
+                          number(error, -1e9, 1e9)});
   }
   if (candidates.empty())
     throw InputError("'" + source + "': no lit settings of scene '" + sceneName + "' at msaa " +

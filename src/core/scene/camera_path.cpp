@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/base/errors.h"
+#include "core/base/json_nesting.h"
 
 namespace shadelab {
 namespace {
@@ -26,7 +27,8 @@ glm::vec3 readVector(const nlohmann::json& value, const std::string& source,
     fail(source, field, "expected an array of three numbers");
   glm::vec3 vector;
   for (int i = 0; i < 3; ++i) {
-    if (!value[size_t(i)].is_number() || !std::isfinite(value[size_t(i)].get<double>()))
+    // Finite as a float too: 1e39 is a finite double and an infinite float.
+    if (!value[size_t(i)].is_number() || !std::isfinite(value[size_t(i)].get<float>()))
       fail(source, field + "[" + std::to_string(i) + "]", "expected a finite number");
     vector[i] = value[size_t(i)].get<float>();
   }
@@ -86,6 +88,7 @@ std::vector<Camera> turntableCameras(const Camera& camera, int64_t frames) {
 
 std::vector<Camera> parseCameraPath(const std::string& text, const std::string& source,
                                     const Camera& base) {
+  checkJsonNesting(text, source);  // the parser recurses once per level
   nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
   if (root.is_discarded()) fail(source, "JSON", "malformed (not valid JSON)");
   nlohmann::json keys = root;
@@ -131,6 +134,13 @@ std::vector<Camera> parseCameraPath(const std::string& text, const std::string& 
     float position = float(i) * float(cameras.size() - 1) / float(*frames - 1);
     size_t key = std::min(size_t(position), cameras.size() - 2);
     path.push_back(mixCameras(cameras[key], cameras[key + 1], position - float(key)));
+    // Two good keys can pass through a bad camera: eyes on opposite sides
+    // of `at` meet it halfway, opposite ups cancel.
+    if (std::optional<CameraProblem> problem = findCameraProblem(path.back()))
+      fail(source, "frames",
+           "frame " + std::to_string(i) + ", between " + where + "[" + std::to_string(key) +
+               "] and " + where + "[" + std::to_string(key + 1) + "]: its " + problem->field + " " +
+               problem->problem + "; " + problem->expected + " (add a camera between them)");
   }
   return path;
 }

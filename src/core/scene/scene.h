@@ -239,6 +239,11 @@ struct Scene {
   Estimate estimate(float scale) const;
 };
 
+// The tessellation factors a request may ask for (--tess, bench's --tess,
+// compare's tess column, the rows of a bench table --quality reads).
+inline constexpr float kMinTessellation = 0.125f;
+inline constexpr float kMaxTessellation = 16.0f;
+
 // The default triangle budget of a request (drawn triangles, summed over
 // objects): 16 M is ~0.6-1.3 GB of vertex and index data and tens of seconds
 // per frame on lavapipe.

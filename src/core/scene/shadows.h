@@ -50,6 +50,9 @@ inline constexpr float kMaxSlopeTangent = 10.0f;
 // and 0.0004 of 2048's (docs/PERFORMANCE.md, "Shadow lookups"; README.md,
 // "Shadow maps").
 inline constexpr uint32_t kDefaultShadowMapSize = 768;
+// The largest map size a request may ask for (the device may allow less:
+// 16384 on lavapipe).
+inline constexpr uint32_t kMaxShadowMapSize = 65536;
 // What the command line and the viewer draw unless told otherwise (the
 // library's FrameSettings default stays Off). Chosen by measurement
 // (README.md, "Shadows"): against the traced reference, whose shadows are
