@@ -52,7 +52,7 @@ const std::string kClimb = "../../../../../../../../../../../../../../";
 
 // A scene JSON with one textured plane whose diffuse map is `file`.
 std::string texturedScene(const std::string& file) {
-  return R"({"materials": {"m": {"diffuseMap": ")" + file +
+  return R"({"materials": {"m": {"diffuse_map": ")" + file +
          R"("}}, "objects": [{"shape": "plane", "material": "m"}]})";
 }
 std::string panoramaScene(const std::string& file) {
@@ -84,6 +84,19 @@ std::string gltfWithImages(const std::string& images) {
          images + R"(,
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+}
+// A valid triangle (positions in a data URI) but for its node, its
+// material and its asset version.
+std::string triangleGltf(const std::string& node, const std::string& material = "{}",
+                         const std::string& version = "2.0") {
+  return R"({"asset": {"version": ")" + version + R"("}, "buffers": [{"byteLength": 36, "uri":
+  "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+  "materials": [)" +
+         material + R"(], "nodes": [)" + node + R"(], "scenes": [{"nodes": [0]}]})";
 }
 std::string nested(const std::string& open, const std::string& close, int depth) {
   std::string text;
@@ -529,43 +542,50 @@ const std::vector<BadCase>& badCases() {
        {{"s.json", texturedScene("gone.png")}},
        render + "{dir}/s.json",
        2,
-       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+       kError + "{dir}/s.json: materials.m.diffuse_map: "},
+      // A NUL would end the file name, and the message, wherever C reads it.
+      {Group::Json,
+       "texture path with a NUL",
+       {{"s.json", texturedScene(R"(a\u0000b.png)")}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: materials.m.diffuse_map: a string with a NUL character"},
       {Group::Images,
        "texture is a FIFO",
        {{"s.json", texturedScene("t.png")}, {"t.png", "@fifo"}},
        render + "{dir}/s.json",
        2,
-       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+       kError + "{dir}/s.json: materials.m.diffuse_map: "},
       {Group::Images,
        "texture links to /dev/zero",
        {{"s.json", texturedScene("t.png")}, {"t.png", "@link:/dev/zero"}},
        render + "{dir}/s.json",
        2,
-       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+       kError + "{dir}/s.json: materials.m.diffuse_map: "},
       {Group::Images,
        "texture climbs to /dev/zero",
        {{"s.json", texturedScene(kClimb + "dev/zero")}},
        render + "{dir}/s.json",
        2,
-       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+       kError + "{dir}/s.json: materials.m.diffuse_map: "},
       {Group::Images,
        "texture is text",
        {{"s.json", texturedScene("t.png")}, {"t.png", "hello"}},
        render + "{dir}/s.json",
        2,
-       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+       kError + "{dir}/s.json: materials.m.diffuse_map: "},
       {Group::Images,
        "texture is a folder",
        {{"s.json", texturedScene("t.png")}, {"t.png", "@folder"}},
        render + "{dir}/s.json",
        2,
-       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+       kError + "{dir}/s.json: materials.m.diffuse_map: "},
       {Group::Images,
        "texture 16384 square",
        {{"s.json", texturedScene("t.png")}, {"t.png", "@copy:bad/huge_16384.png"}},
        render + "{dir}/s.json",
        2,
-       kError + "{dir}/s.json: materials.m.diffuseMap: "},
+       kError + "{dir}/s.json: materials.m.diffuse_map: "},
       {Group::Images,
        "panorama missing",
        {{"s.json", panoramaScene("gone.hdr")}},
@@ -616,6 +636,48 @@ const std::vector<BadCase>& badCases() {
        kError + "--script '{dir}/keys.txt' is a character device, expected a regular file"},
 
       // glTF: the committed broken files, and files made here.
+      // Fields of the wrong length or value were once ignored: a wrong image, silently.
+      {Group::Gltf,
+       "node matrix of 15 numbers",
+       {{"m.gltf", triangleGltf(R"({"mesh": 0, "matrix": [2,0,0,0, 0,2,0,0, 0,0,2,0, 0,0,0]})")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: nodes[0].matrix: 15 numbers; expected 16"},
+      {Group::Gltf,
+       "node rotation of no length",
+       {{"m.gltf", triangleGltf(R"({"mesh": 0, "rotation": [0, 0, 0, 0]})")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: nodes[0].rotation: has no length"},
+      {Group::Gltf,
+       "node scale too large to frame",
+       {{"m.gltf", triangleGltf(R"({"mesh": 0, "scale": [1e38, 1e38, 1e38]})")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: the scene spans (0, 0, 0) to (1e+38, 1e+38, 0), too far to "
+                "frame a camera on"},
+      {Group::Gltf,
+       "alpha mode unknown",
+       {{"m.gltf", triangleGltf(R"({"mesh": 0})", R"({"alphaMode": "SOMETIMES"})")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError +
+           "{dir}/m.gltf: materials[0].alphaMode: \"SOMETIMES\"; expected OPAQUE, MASK or BLEND"},
+      {Group::Gltf,
+       "base colour of five numbers",
+       {{"m.gltf",
+         triangleGltf(R"({"mesh": 0})",
+                      R"({"pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1, 1]}})")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: invalid glTF: Array length of `baseColorFactor` parameter in "
+                "pbrMetallicRoughness must be 4, but got 5"},
+      {Group::Gltf,
+       "glTF 3.0",
+       {{"m.gltf", triangleGltf(R"({"mesh": 0})", "{}", "3.0")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: asset.version: \"3.0\"; expected a glTF 2.x version"},
       {Group::Gltf,
        "truncated GLB",
        {},

@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -199,13 +200,20 @@ tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& so
                    : loader.LoadASCIIFromString(&model, &error, &warning,
                                                 reinterpret_cast<const char*>(bytes.data()),
                                                 unsigned(bytes.size()), baseDir);
-  if (!ok)
+  // tinygltf also reports some errors and carries on with the default
+  // (a baseColorFactor of 5 numbers leaves it white): those are errors too.
+  if (!ok || !error.empty())
     throw InputError(source + ": invalid " + (binary ? "GLB" : "glTF") + ": " +
                      trimmed(error.empty() ? warning : error));
   gltf::checkAlphaCutoffs(
       binary ? glbJson(bytes)
              : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
       source);
+  // glTF 2.x: a later major version may mean anything (the spec: a loader
+  // must not load an asset whose major version it does not know).
+  if (model.asset.version.rfind("2.", 0) != 0)
+    fail(source, "asset.version",
+         "\"" + model.asset.version.substr(0, 32) + "\"; expected a glTF 2.x version (\"2.0\")");
   for (const std::string& extension : model.extensionsRequired)
     if (!kSupportedExtensions.count(extension))
       throw InputError(source + ": extensionsRequired: \"" + extension +
@@ -288,6 +296,19 @@ class NodeWalker {
     if (depth > kMaxDepth)
       fail(source_, where, "nested more than " + std::to_string(kMaxDepth) + " levels deep");
     const tinygltf::Node& node = model_.nodes[size_t(index)];
+    // A wrong length would otherwise be ignored: the node drawn untransformed.
+    for (auto [field, size, expected] :
+         {std::tuple{"matrix", node.matrix.size(), size_t(16)},
+          std::tuple{"translation", node.translation.size(), size_t(3)},
+          std::tuple{"rotation", node.rotation.size(), size_t(4)},
+          std::tuple{"scale", node.scale.size(), size_t(3)}})
+      if (size != 0 && size != expected)
+        fail(source_, where + "." + field,
+             std::to_string(size) + " numbers; expected " + std::to_string(expected));
+    if (node.rotation.size() == 4 &&
+        !(glm::length(glm::dvec4(node.rotation[0], node.rotation[1], node.rotation[2],
+                                 node.rotation[3])) > 1e-6))
+      fail(source_, where + ".rotation", "has no length; expected a unit quaternion (x, y, z, w)");
     glm::mat4 world = parent * localMatrix(node);
     for (int column = 0; column < 4; ++column)
       for (int row = 0; row < 4; ++row)
@@ -344,6 +365,21 @@ class NodeWalker {
     }
     if (scene_.objects.size() == before)
       fail(source_, gltf::describeMesh(model_, meshIndex), "has no triangles to draw");
+    // A finite matrix can still carry finite vertices past the float range
+    // (a scale of 1e38): the box's corners, taken to the world, show it.
+    for (size_t o = before; o < scene_.objects.size(); ++o) {
+      Bounds box = computeBounds(scene_.meshes[scene_.objects[o].mesh]);
+      for (int corner = 0; corner < 8; ++corner) {
+        glm::vec3 local(corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
+                        corner & 4 ? box.max.z : box.min.z);
+        glm::vec4 placed = world * glm::vec4(local, 1.0f);
+        if (!std::isfinite(placed.x) || !std::isfinite(placed.y) || !std::isfinite(placed.z))
+          fail(source_, where,
+               "its transform takes " + gltf::describeMesh(model_, meshIndex) +
+                   " beyond the float range (expected a scene whose coordinates stay below "
+                   "about 1e38)");
+      }
+    }
   }
 
   Camera camera(int index, const glm::mat4& world, const std::string& where) const {
@@ -424,10 +460,23 @@ class NodeWalker {
   GltfImport* result_ = nullptr;
 };
 
-Scene sceneFromImport(Scene scene, GltfImport import) {
+Scene sceneFromImport(Scene scene, GltfImport import, const std::string& source) {
   scene.lights = std::move(import.lights);
   if (scene.lights.size() > MAX_LIGHTS) scene.lights.resize(MAX_LIGHTS);
-  scene.camera = import.camera ? *import.camera : frameBounds(sceneBounds(scene));
+  if (import.camera) {
+    scene.camera = *import.camera;
+  } else {
+    // Framing squares the scene's lengths: past ~1e19 they overflow a float.
+    Bounds bounds = sceneBounds(scene);
+    scene.camera = frameBounds(bounds);
+    if (findCameraProblem(scene.camera)) {
+      std::ostringstream extent;
+      extent << "the scene spans (" << bounds.min.x << ", " << bounds.min.y << ", " << bounds.min.z
+             << ") to (" << bounds.max.x << ", " << bounds.max.y << ", " << bounds.max.z
+             << "), too far to frame a camera on";
+      fail(source, "", extent.str() + "; expected coordinates within about 1e18 (or a camera)");
+    }
+  }
   if (scene.lights.empty()) scene.lights.push_back(defaultKeyLight(scene.camera));
   // glTF materials set ka = kd, so a dim ambient keeps unlit sides readable.
   scene.ambient = glm::vec3(0.15f);
@@ -449,7 +498,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
   Scene scene;
   scene.name = path.stem().string();
   GltfImport import = appendGltf(scene, path);
-  return sceneFromImport(std::move(scene), std::move(import));
+  return sceneFromImport(std::move(scene), std::move(import), path.string());
 }
 
 Scene parseGltfScene(std::span<const uint8_t> bytes, const std::string& sourceName) {
@@ -457,7 +506,7 @@ Scene parseGltfScene(std::span<const uint8_t> bytes, const std::string& sourceNa
   Scene scene;
   scene.name = sourceName;
   GltfImport import = NodeWalker(model, sourceName, scene).walk(glm::mat4(1.0f));
-  return sceneFromImport(std::move(scene), std::move(import));
+  return sceneFromImport(std::move(scene), std::move(import), sourceName);
 }
 
 Bounds sceneBounds(const Scene& scene) {

@@ -162,6 +162,9 @@ const Material& MaterialTable::material(int index) {
   gltfMaterial.pbrMetallicRoughness.roughnessFactor = 0.5;
   const tinygltf::Material& source = index >= 0 ? model_.materials[size_t(index)] : gltfMaterial;
   const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
+  if (source.alphaMode != "OPAQUE" && source.alphaMode != "MASK" && source.alphaMode != "BLEND")
+    fail(source_, where + ".alphaMode",
+         "\"" + source.alphaMode.substr(0, 32) + "\"; expected OPAQUE, MASK or BLEND");
 
   glm::vec3 base = glm::clamp(vec3Of(pbr.baseColorFactor, glm::vec3(1.0f)), 0.0f, 1.0f);
   float alpha = pbr.baseColorFactor.size() >= 4 ? clamp01(pbr.baseColorFactor[3]) : 1.0f;

@@ -143,7 +143,11 @@ bool Field::boolean() const {
 
 std::string Field::string() const {
   if (!json().is_string()) wrongType("a string");
-  return json().get<std::string>();
+  std::string text = json().get<std::string>();
+  // A NUL ends the string wherever C reads it (file names, messages).
+  if (text.find('\0') != std::string::npos)
+    fail("a string with a NUL character (\\u0000)", "text without NUL characters");
+  return text;
 }
 
 glm::vec3 Field::vec3() const {
