@@ -162,7 +162,8 @@ glm::vec3 environmentRadiance(const Environment& environment, glm::vec3 directio
 
 ImageRgba readLinearImage(const std::filesystem::path& path) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
+  // Only a missing path is "missing": a FIFO or a device is named as one.
+  if (!std::filesystem::exists(path, error))
     throw InputError("image '" + path.string() + "' does not exist");
   checkInputFile(path, "image", kMaxBinaryInputBytes);
   ImageReader source(path, "cannot read image '" + path.string() + "'");
