@@ -8,6 +8,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/json_nesting.h"
+#include "core/scene/scene_json_fields.h"
 
 namespace shadelab {
 namespace {
@@ -89,7 +90,7 @@ std::vector<Camera> turntableCameras(const Camera& camera, int64_t frames) {
 std::vector<Camera> parseCameraPath(const std::string& text, const std::string& source,
                                     const Camera& base) {
   checkJsonNesting(text, source);  // the parser recurses once per level
-  nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
+  nlohmann::json root = nlohmann::json::parse(text, scene_json::refuseDuplicateKeys(source), false);
   if (root.is_discarded()) fail(source, "JSON", "malformed (not valid JSON)");
   nlohmann::json keys = root;
   std::optional<int64_t> frames;

@@ -587,7 +587,7 @@ size_t quotedLiteralByte(std::string_view text, const std::string& what) {
 nlohmann::json parseDocument(std::string_view text, const std::string& source) {
   checkJsonNesting(text, source);  // the parser recurses once per level
   try {
-    return nlohmann::json::parse(text.begin(), text.end());
+    return nlohmann::json::parse(text.begin(), text.end(), scene_json::refuseDuplicateKeys(source));
   } catch (const nlohmann::json::parse_error& error) {
     throw syntaxError(text, source, error.byte, error.what());
   } catch (const nlohmann::json::exception& error) {

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <memory>
+#include <set>
 #include <sstream>
 
 #include "core/base/errors.h"
@@ -176,6 +178,26 @@ size_t Field::choice(std::string_view what, const Names& names) const {
   for (size_t i = 0; i < names.size(); ++i)
     if (names[i] == value) return i;
   fail("unknown " + std::string(what) + " " + describe(json()), expected);
+}
+
+nlohmann::json::parser_callback_t refuseDuplicateKeys(const std::string& source) {
+  // The keys seen so far in each object being parsed, innermost last.
+  auto open = std::make_shared<std::vector<std::set<std::string>>>();
+  return [open, source](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (event == Event::object_start) {
+      open->emplace_back();
+    } else if (event == Event::object_end) {
+      if (!open->empty()) open->pop_back();
+    } else if (event == Event::key && !open->empty()) {
+      const std::string& key = parsed.get_ref<const std::string&>();
+      if (!open->back().insert(key).second)
+        throw InputError(source + ": JSON: the key \"" + key.substr(0, 64) +
+                         "\" appears twice in one object; expected each key once (a parser "
+                         "would keep the last silently)");
+    }
+    return true;
+  };
 }
 
 }  // namespace shadelab::scene_json

@@ -78,4 +78,9 @@ std::string describe(const nlohmann::json& value);
 // Shortest readable form of a float: 0.1, 100, 1e-06.
 std::string formatNumber(float value);
 
+// A callback for nlohmann::json::parse that throws InputError naming
+// `source` and the key when an object holds a key twice: the parser would
+// keep the last one and drop the first without a word.
+nlohmann::json::parser_callback_t refuseDuplicateKeys(const std::string& source);
+
 }  // namespace shadelab::scene_json
