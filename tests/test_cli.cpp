@@ -424,6 +424,11 @@ TEST_F(Cli, TraceEpsilonIsValidated) {
   // Epsilon 0 brings shadow acne back: the image differs from the default's.
   ASSERT_EQ(run("trace whitted -o " + out("e0.png") + " --size 32x18 --spp 1 --epsilon 0").exitCode,
             0);
+  // Below a float's smallest (from_chars into a float called it out of range): 0 as well.
+  ASSERT_EQ(
+      run("trace whitted -o " + out("tiny.png") + " --size 32x18 --spp 1 --epsilon 1e-50").exitCode,
+      0);
+  EXPECT_EQ(readText(out("tiny.png")), readText(out("e0.png")));
   ASSERT_EQ(run("trace whitted -o " + out("e.png") + " --size 32x18 --spp 1").exitCode, 0);
   EXPECT_NE(readText(out("e0.png")), readText(out("e.png")));
 }

@@ -35,16 +35,18 @@ struct TraceOptions {
 
 // --epsilon: a finite number of world units from 0 to 1; throws InputError.
 float parseEpsilon(const std::string& text) {
-  float value = 0.0f;
+  // Read as a double: from_chars into a float refuses 1e-50 as out of
+  // range, though it lies between 0 and 1 (it becomes 0).
+  double value = 0.0;
   const char* end = text.data() + text.size();
   auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end || !std::isfinite(value) ||
-      value < 0.0f || value > 1.0f)
+  if (text.empty() || error != std::errc() || stop != end || !std::isfinite(value) || value < 0.0 ||
+      value > 1.0)
     throw InputError("--epsilon '" + text +
                      "': expected a number from 0 to 1 (world units the new rays start off the "
                      "surface; default " +
                      std::to_string(TraceSettings{}.epsilon).substr(0, 6) + ")");
-  return value;
+  return float(value);
 }
 
 int runTrace(const TraceOptions& options, const GlobalOptions& global) {
