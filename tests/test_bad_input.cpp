@@ -689,6 +689,13 @@ const std::vector<BadCase>& badCases() {
        kError + "{dir}/m.gltf: invalid glTF: Array length of `baseColorFactor` parameter in "
                 "pbrMetallicRoughness must be 4, but got 5"},
       {Group::Gltf,
+       "texture on a uv set the mesh lacks",
+       {},
+       render + "{data}/bad/texcoord_missing.gltf",
+       2,
+       kError + "{data}/bad/texcoord_missing.gltf: meshes[0].primitives[0]: its material's "
+                "textures read TEXCOORD_0, which it does not have"},
+      {Group::Gltf,
        "glTF 3.0",
        {{"m.gltf", triangleGltf(R"({"mesh": 0})", "{}", "3.0")}},
        render + "{dir}/m.gltf",

@@ -212,6 +212,13 @@ def bad():
     b.doc["textures"] = [{"source": 0}]
     b.doc["images"] = [{"uri": "no_such_image.png"}]
     b.finish("bad/missing_image.gltf")
+    # A texture on uv set 0 of a primitive with no TEXCOORD_0.
+    b = tri()
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0
+    b.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    b.doc["textures"] = [{"source": 0}]
+    b.doc["images"] = [embed_png(2, 2, bytes([255, 0, 0, 255]) * 4)]
+    b.finish("bad/texcoord_missing.gltf")
     text = open(os.path.join(HERE, "hierarchy.gltf")).read()
     open(os.path.join(HERE, "bad/syntax_error.gltf"), "w").write(text.replace('"nodes": [', '"nodes": [,', 1))
     whole = open(os.path.join(HERE, "triangle.glb"), "rb").read()

@@ -348,6 +348,14 @@ class NodeWalker {
       int materialIndex = mesh.primitives[p].material;
       const Material& material = materials_.material(materialIndex);
       int texCoordSet = materials_.texCoordSet(materialIndex);
+      // A texture on a uv set the primitive lacks would be sampled at (0, 0)
+      // everywhere: one flat colour, silently.
+      std::string uvSet = "TEXCOORD_" + std::to_string(texCoordSet);
+      if ((material.diffuseMap.present() || material.normalMap.present()) &&
+          !mesh.primitives[p].attributes.count(uvSet))
+        fail(source_,
+             gltf::describeMesh(model_, meshIndex) + ".primitives[" + std::to_string(p) + "]",
+             "its material's textures read " + uvSet + ", which it does not have");
       auto key = std::make_tuple(meshIndex, int(p), mirrored, texCoordSet);
       auto found = meshes_.find(key);
       if (found == meshes_.end()) {
