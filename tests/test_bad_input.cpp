@@ -86,10 +86,11 @@ std::string gltfWithImages(const std::string& images) {
   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
 }
 // A valid triangle (positions in a data URI) but for its node, its
-// material and its asset version.
+// material, its asset version and `extra` members at the top (each ending in a comma).
 std::string triangleGltf(const std::string& node, const std::string& material = "{}",
-                         const std::string& version = "2.0") {
-  return R"({"asset": {"version": ")" + version + R"("}, "buffers": [{"byteLength": 36, "uri":
+                         const std::string& version = "2.0", const std::string& extra = "") {
+  return R"({)" + extra + R"("asset": {"version": ")" + version +
+         R"("}, "buffers": [{"byteLength": 36, "uri":
   "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
   "bufferViews": [{"buffer": 0, "byteLength": 36}],
   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
@@ -695,6 +696,16 @@ const std::vector<BadCase>& badCases() {
        2,
        kError + "{data}/bad/texcoord_missing.gltf: meshes[0].primitives[0]: its material's "
                 "textures read TEXCOORD_0, which it does not have"},
+      {Group::Gltf,
+       "light of negative intensity",
+       {{"m.gltf",
+         triangleGltf(
+             R"({"mesh": 0, "children": [1]}, {"extensions": {"KHR_lights_punctual": {"light": 0}}})",
+             "{}", "2.0",
+             R"("extensionsUsed": ["KHR_lights_punctual"], "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": -5}]}},)")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: extensions.KHR_lights_punctual.lights[0].intensity: -5"},
       {Group::Gltf,
        "glTF 3.0",
        {{"m.gltf", triangleGltf(R"({"mesh": 0})", "{}", "3.0")}},

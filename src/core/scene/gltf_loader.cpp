@@ -438,6 +438,14 @@ class NodeWalker {
       fail(source_, where + ": KHR_lights_punctual",
            "refers to light " + std::to_string(index) + ", which does not exist");
     const tinygltf::Light& source = model_.lights[size_t(index)];
+    std::string lightWhere = "extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "]";
+    // A negative light would darken; the extension says 0 or more (candela or lux).
+    if (!(source.intensity >= 0.0 && std::isfinite(source.intensity)))
+      fail(source_, lightWhere + ".intensity",
+           std::to_string(source.intensity) + "; expected a finite number of 0 or more");
+    if (!source.color.empty() && source.color.size() != 3)
+      fail(source_, lightWhere + ".color",
+           std::to_string(source.color.size()) + " numbers; expected 3 (r, g, b)");
     Light light;
     glm::vec3 colour = glm::clamp(
         source.color.size() >= 3
