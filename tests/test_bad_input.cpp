@@ -99,6 +99,10 @@ std::string triangleGltf(const std::string& node, const std::string& material = 
   "materials": [)" +
          material + R"(], "nodes": [)" + node + R"(], "scenes": [{"nodes": [0]}]})";
 }
+// `text` with its first `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
 std::string nested(const std::string& open, const std::string& close, int depth) {
   std::string text;
   for (int i = 0; i < depth; ++i) text += open;
@@ -706,6 +710,13 @@ const std::vector<BadCase>& badCases() {
        render + "{dir}/m.gltf",
        2,
        kError + "{dir}/m.gltf: extensions.KHR_lights_punctual.lights[0].intensity: -5"},
+      {Group::Gltf,
+       "joints naming a missing accessor",
+       {{"m.gltf", replaced(triangleGltf(R"({"mesh": 0})"), R"("POSITION": 0)",
+                            R"("POSITION": 0, "JOINTS_0": 7)")}},
+       render + "{dir}/m.gltf",
+       2,
+       kError + "{dir}/m.gltf: meshes[0] primitives[0]: JOINTS_0 refers to accessor 7"},
       {Group::Gltf,
        "glTF 3.0",
        {{"m.gltf", triangleGltf(R"({"mesh": 0})", "{}", "3.0")}},

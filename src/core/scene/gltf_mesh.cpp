@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <string>
 
 #include "core/base/errors.h"
 #include "core/scene/gltf_detail.h"
@@ -261,6 +263,18 @@ Mesh primitiveMesh(const tinygltf::Model& model, const std::string& source, int 
       describeMesh(model, meshIndex) + " primitives[" + std::to_string(primitiveIndex) + "]");
   int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
   if (mode > TINYGLTF_MODE_TRIANGLE_FAN) reader.fail("unknown mode " + std::to_string(mode));
+  // Attributes shadelab does not draw (JOINTS_n, WEIGHTS_n, COLOR_n, morph
+  // targets) are still the file's: one naming a missing accessor is broken.
+  auto checkAccessors = [&](const std::map<std::string, int>& attributes,
+                            const std::string& where) {
+    for (const auto& [name, index] : attributes)
+      if (index < 0 || size_t(index) >= model.accessors.size())
+        reader.fail(where + name + " refers to accessor " + std::to_string(index) +
+                    ", but the file has " + std::to_string(model.accessors.size()));
+  };
+  checkAccessors(primitive.attributes, "");
+  for (size_t t = 0; t < primitive.targets.size(); ++t)
+    checkAccessors(primitive.targets[t], "targets[" + std::to_string(t) + "].");
   if (mode < TINYGLTF_MODE_TRIANGLES) return Mesh{};  // points and lines are not drawn
 
   int positionAccessor = attribute(primitive, "POSITION");
