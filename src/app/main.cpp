@@ -1,5 +1,7 @@
 // shadelab: one binary, subcommands. main only parses and dispatches; each
 // command lives in its own cmd_*.cpp.
+#include <malloc.h>
+
 #include <cstdio>
 #include <map>
 
@@ -12,6 +14,14 @@
 
 int main(int argc, char** argv) {
   using namespace shadelab;
+  // llvmpipe allocates its binned scene anew every frame. glibc grows the
+  // heap by exactly what is asked and gives the top back when it is freed,
+  // so a large frame paid for fresh, zeroed pages each time, in some runs
+  // and not others: lod-10000.json --lod auto --impostors off ran at ~48 or
+  // ~97 ms a frame from one run to the next. 64 MiB of slack kept at the
+  // top of the heap makes every run the fast one; peak RSS is unchanged
+  // (docs/PERFORMANCE.md, "Seventeenth session").
+  mallopt(M_TOP_PAD, 64 << 20);
   CLI::App app{"shadelab: classic real-time rendering on Vulkan, measured"};
   app.require_subcommand(1);
   app.fallthrough();  // global options may follow the subcommand name
