@@ -17,6 +17,14 @@ namespace {
 constexpr uint32_t kMaxImageSide = 16384;
 }  // namespace
 
+void checkNotInput(const std::filesystem::path& output, const std::string& input,
+                   const std::string& what) {
+  std::error_code error;
+  if (!input.empty() && std::filesystem::equivalent(output, input, error))
+    throw InputError("output '" + output.string() + "' (" + what + ") is the input '" + input +
+                     "': it would be overwritten; expected another output name");
+}
+
 CLI::Validator finiteRange(double min, double max) {
   std::ostringstream description;
   description << "FLOAT in [" << min << " - " << max << "]";

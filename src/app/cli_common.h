@@ -22,6 +22,12 @@ struct Size {
 // "1280x720" -> {1280, 720}; throws InputError naming the option and value.
 Size parseSize(const std::string& text, const std::string& option);
 
+// Throws InputError when `output`, a file the command writes (`what` says
+// which), is the file `input` names (a scene or model; a built-in name is
+// no file): compare my.json -o my.png once wrote its numbers over my.json.
+void checkNotInput(const std::filesystem::path& output, const std::string& input,
+                   const std::string& what);
+
 // CLI::Range for a floating-point option that also refuses NaN, which passes
 // CLI::Range (every comparison with NaN is false), and infinities.
 CLI::Validator finiteRange(double min, double max);

@@ -213,6 +213,7 @@ ComparePlan planCompare(const CompareOptions& options, const GlobalOptions& glob
     throw InputError("output '" + options.output + "': expected a .png file name");
   checkOutputPath(plan.sheetPath);
   plan.jsonPath = std::filesystem::path(plan.sheetPath).replace_extension(".json");
+  checkNotInput(plan.jsonPath, options.scene, "the numbers beside the sheet");
   plan.scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(plan.cell.width) / float(plan.cell.height),
                      plan.scene.camera);

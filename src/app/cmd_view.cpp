@@ -48,7 +48,15 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   viewer.shaderDirectory = shaders && *shaders ? shaders : SHADELAB_SHADER_SOURCE_DIR;
   Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);
-  if (viewer.script) checkScriptCameraPaths(*viewer.script, options.script, scene.camera);
+  if (viewer.script) {
+    checkScriptCameraPaths(*viewer.script, options.script, scene.camera);
+    // A screenshot writes its camera beside it as .json: never over the scene.
+    for (const ScriptStep& step : *viewer.script)
+      if (step.kind == ScriptStep::Kind::Screenshot) {
+        std::filesystem::path sidecar = std::filesystem::path(step.path).replace_extension(".json");
+        checkNotInput(sidecar, options.scene, "the camera beside 'screenshot " + step.path + "'");
+      }
+  }
   checkTriangleBudget(scene, viewer.tessellation, global.maxTriangles,
                       "--tess " + options.tessellation, "--max-triangles");
   printSceneWarnings(scene, true);
