@@ -46,8 +46,14 @@ void CameraController::zoom(float steps) {
   float factor = std::pow(0.9f, steps);
   glm::vec3 offset = camera_.eye - camera_.at;
   float distance = glm::length(offset);
-  float wanted = std::max(distance * factor, camera_.near * 2.0f);
-  camera_.eye = camera_.at + offset * (wanted / distance);
+  if (!(distance > 0.0f)) return;
+  // No nearer than twice the near plane, no farther than the far one (all
+  // would be clipped beyond it, and without a bound a long zoom out reached
+  // infinity and a NaN camera).
+  float wanted = std::clamp(distance * factor, camera_.near * 2.0f,
+                            std::max(camera_.far, camera_.near * 2.0f));
+  factor = wanted / distance;
+  camera_.eye = camera_.at + offset * factor;
   // An orthographic view does not shrink with distance: scale its volume.
   if (camera_.projection == Projection::Orthographic) {
     camera_.left *= factor;

@@ -33,8 +33,9 @@ struct LineReader {
     const std::string& word = words[index];
     Number value{};
     auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (error != std::errc() || end != word.data() + word.size() || value < minimum ||
-        value > maximum)
+    // Written so that NaN (which from_chars reads) fails too.
+    if (error != std::errc() || end != word.data() + word.size() ||
+        !(value >= minimum && value <= maximum))
       fail(usage);
     return value;
   }

@@ -49,7 +49,13 @@ SkyDesc parseSky(const Field& field) {
       f->fail(formatNumber(sky.sunSizeDegrees) + " degrees is out of range",
               "the sun's angular diameter in degrees, 0 (no sun) to 90");
   }
-  if (auto f = field.optional("sun_intensity")) sky.sunIntensity = f->colour();
+  if (auto f = field.optional("sun_intensity")) {
+    sky.sunIntensity = f->colour();
+    if (glm::any(glm::greaterThan(sky.sunIntensity, glm::vec3(kMaxEnvironmentIntensity))))
+      f->fail("a component above " + formatNumber(kMaxEnvironmentIntensity),
+              "a number or 3 numbers from 0 to " + formatNumber(kMaxEnvironmentIntensity) +
+                  " (radiance that large overflows the half-float target)");
+  }
   return sky;
 }
 
@@ -102,7 +108,13 @@ Environment parseEnvironment(const Field& field, const std::filesystem::path& fo
       environment.source = "cube faces";
       break;
   }
-  if (auto f = field.optional("intensity")) environment.intensity = f->nonNegative();
+  if (auto f = field.optional("intensity")) {
+    environment.intensity = f->nonNegative();
+    if (environment.intensity > kMaxEnvironmentIntensity)
+      f->fail(formatNumber(environment.intensity) + " is too large",
+              "a number from 0 to " + formatNumber(kMaxEnvironmentIntensity) +
+                  " (radiance that large overflows the half-float target)");
+  }
   if (auto f = field.optional("resolution")) environment.resolution = parseResolution(*f);
   return environment;
 }
