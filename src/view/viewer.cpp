@@ -398,6 +398,7 @@ bool Viewer::drawFrame() {
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
     work.screenshotPath = std::exchange(screenshotRequest_, {});
     work.screenshotExtent = extent;
+    work.screenshotCamera = camera_.camera();
     screenshot = &work.screenshot;
   }
   recordPresentTransition(cmd, image, extent, screenshot);
@@ -442,7 +443,7 @@ void Viewer::finishSlotWork(SlotWork& work) {
     // The sidecar: what a headless render of this view needs.
     std::filesystem::path sidecar =
         std::filesystem::path(work.screenshotPath).replace_extension(".json");
-    const Camera& camera = camera_.camera();
+    const Camera& camera = work.screenshotCamera;
     std::string name;
     for (char c : scene_.name)
       name += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);

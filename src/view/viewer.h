@@ -76,6 +76,8 @@ class Viewer {
   struct SlotWork {
     Buffer screenshot;
     std::string screenshotPath;
+    Camera
+        screenshotCamera;  // the frame's, for the sidecar (the view may move before it is written)
     VkExtent2D screenshotExtent{};
     Buffer metrics;
     bool metricsPending = false;
