@@ -2,7 +2,9 @@
 // command lives in its own cmd_*.cpp.
 #include <malloc.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <map>
 
 #include "app/commands.h"
@@ -55,13 +57,22 @@ int main(int argc, char** argv) {
     app.exit(error);
     return 2;  // usage error
   }
+  int code = 1;
   try {
-    return commands.at(app.get_subcommands().front()->get_name())();
+    code = commands.at(app.get_subcommands().front()->get_name())();
   } catch (const InputError& error) {
     std::fprintf(stderr, "shadelab: error: %s\n", error.what());
-    return 2;
+    code = 2;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "shadelab: internal error: %s\n", error.what());
-    return 1;
+    code = 1;
   }
+  // What went to standard output (scenes --print, --json) is only written
+  // once flushed: a full disk there is a failure, not a success.
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::fprintf(stderr, "shadelab: error: cannot write to standard output (%s)\n",
+                 std::strerror(errno));
+    return code == 0 ? 1 : code;
+  }
+  return code;
 }

@@ -11,16 +11,21 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/base/errors.h"
+#include "core/base/files.h"
+
 namespace shadelab {
 namespace {
 
+// Only a regular file of sane size: a FIFO named like a shader hung the
+// reload, a link to /dev/zero grew without end.
 bool readText(const std::filesystem::path& path, std::string& text) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return false;
-  std::stringstream stream;
-  stream << file.rdbuf();
-  text = stream.str();
-  return true;
+  try {
+    text = readInputFile(path, "shader source", kMaxTextInputBytes);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
 }
 
 // Resolves `#include "x"` against one folder, as the build's -I does.
