@@ -430,6 +430,17 @@ TEST_F(Viewer, ResizeAndMinimiseRestoreAreValidationClean) {
   EXPECT_GE(std::stoi(builds[1]), 5) << r.output;
 }
 
+// Minimised, no frame is drawn to measure against the reference: a
+// script's wait-reference there once waited for ever. It now says so and
+// goes on (timeout: a regression fails instead of stalling the suite).
+TEST_F(Viewer, WaitingForTheReferenceWhileMinimisedEnds) {
+  CommandResult r =
+      view("key X\nminimize\nwait-reference\nrestore\nframes 1\nquit\n", "", " timeout 60");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("wait-reference: the window is minimised"), std::string::npos)
+      << r.output;
+}
+
 // Split screen needs a pixel column per view: a window narrower than that
 // (3 px, 1x1 as when minimised by a window manager) turns it off with a
 // message and the viewer carries on; the teardown is validation clean too.

@@ -576,7 +576,12 @@ void Viewer::setMeasureAgainstReference(bool on) {
 void Viewer::waitForReference() {
   bool failed = reference_.state() == BackgroundTrace::State::Idle && !reference_.error().empty();
   if (!measureAgainstReference_) say("wait-reference: X is off, no reference to wait for", true);
-  if (referenceMeasured_ || !measureAgainstReference_ || failed) {
+  // Minimised, no frame is drawn, so none is measured against the
+  // reference: waiting would never end (a script's minimize, then
+  // wait-reference, hung).
+  bool undrawn = minimized_ && measureAgainstReference_ && !referenceMeasured_;
+  if (undrawn) say("wait-reference: the window is minimised, nothing is drawn to measure", true);
+  if (referenceMeasured_ || !measureAgainstReference_ || failed || undrawn) {
     waitingForReference_ = false;
     return;
   }
