@@ -195,6 +195,11 @@ int reportSequence(const RenderOptions& options, const Scene& scene, const Rende
 }
 
 int runRender(const RenderOptions& options, const GlobalOptions& global) {
+  // One image is no animation (it was ignored without a word).
+  if (options.gif && !options.turntable && options.cameraPath.empty())
+    throw InputError(
+        "--gif: expected --turntable N or --camera-path FILE with it (a sequence to "
+        "animate)");
   Size size = parseSize(options.size, "--size");
   bool autoTessellation = options.tessellation == "auto";
   float factor = autoTessellation ? 1.0f : parseTessellationFactor(options.tessellation);
@@ -411,11 +416,13 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                    "or {\"frames\": N, \"cameras\": [...]} interpolated) into NAME-0001.EXT ...")
       ->excludes(turntable)
       ->excludes(quality);
-  command->add_flag("--gif", options->gif,
-                    "With --turntable or --camera-path: also NAME.gif, the frames animated");
+  CLI::Option* gif =
+      command->add_flag("--gif", options->gif,
+                        "With --turntable or --camera-path: also NAME.gif, the frames animated");
   command->add_option("--fps", options->framesPerSecond, "Frames per second of --gif")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->check(CLI::Range(1, 100))
+      ->needs(gif);
   return [options, &global] { return runRender(*options, global); };
 }
 
