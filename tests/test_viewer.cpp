@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <regex>
 #include <string>
@@ -439,6 +440,20 @@ TEST_F(Viewer, WaitingForTheReferenceWhileMinimisedEnds) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("wait-reference: the window is minimised"), std::string::npos)
       << r.output;
+}
+
+// Key P takes the first number whose image and camera sidecar are both
+// free: a sidecar left from an earlier screenshot is not written over.
+TEST_F(Viewer, ScreenshotKeyWritesOverNoEarlierSidecar) {
+  std::ofstream(path("shadelab-screenshot-1.json")) << "mine";
+  CommandResult r = view("key O\nframes 2\nkey P\nframes 3\nquit\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream kept(path("shadelab-screenshot-1.json"));
+  std::string text((std::istreambuf_iterator<char>(kept)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "mine");
+  EXPECT_FALSE(fs::exists(path("shadelab-screenshot-1.png"))) << r.output;
+  EXPECT_TRUE(fs::exists(path("shadelab-screenshot-2.png"))) << r.output;
+  EXPECT_TRUE(fs::exists(path("shadelab-screenshot-2.json"))) << r.output;
 }
 
 // Split screen needs a pixel column per view: a window narrower than that

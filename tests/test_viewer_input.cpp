@@ -86,6 +86,10 @@ TEST(CameraController, ZoomScalesDistanceByPointNinePerStep) {
   EXPECT_NEAR(glm::length(controller.camera().eye), 5.0f, 1e-5f);
   controller.zoom(100.0f);  // never through the target
   EXPECT_GE(glm::length(controller.camera().eye), 2.0f * frontCamera().near - 1e-6f);
+  // Out without end: the point looked at stays half-way to the far plane.
+  for (int i = 0; i < 1000; ++i) controller.zoom(-100.0f);
+  EXPECT_NEAR(glm::length(controller.camera().eye), 0.5f * frontCamera().far,
+              1e-3f * frontCamera().far);
 }
 
 const std::vector<std::string> kKeys = {"1", "2", "C", "P"};

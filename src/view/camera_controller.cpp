@@ -47,11 +47,12 @@ void CameraController::zoom(float steps) {
   glm::vec3 offset = camera_.eye - camera_.at;
   float distance = glm::length(offset);
   if (!(distance > 0.0f)) return;
-  // No nearer than twice the near plane, no farther than the far one (all
-  // would be clipped beyond it, and without a bound a long zoom out reached
-  // infinity and a NaN camera).
+  // No nearer than twice the near plane, no farther than half the far one:
+  // the point looked at stays mid-way in the depth range, so what lies
+  // around it is drawn (at the far plane half of it was clipped), and a long
+  // zoom out does not reach infinity and a NaN camera.
   float wanted = std::clamp(distance * factor, camera_.near * 2.0f,
-                            std::max(camera_.far, camera_.near * 2.0f));
+                            std::max(camera_.far * 0.5f, camera_.near * 2.0f));
   factor = wanted / distance;
   camera_.eye = camera_.at + offset * factor;
   // An orthographic view does not shrink with distance: scale its volume.

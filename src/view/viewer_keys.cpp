@@ -244,8 +244,10 @@ void Viewer::reloadShaders() {
 
 std::string Viewer::nextScreenshotName() const {
   for (int i = 1;; ++i) {
-    std::string name = "shadelab-screenshot-" + std::to_string(i) + ".png";
-    if (!std::filesystem::exists(name)) return name;
+    // Both files must be free: the camera sidecar goes beside the image.
+    std::string stem = "shadelab-screenshot-" + std::to_string(i);
+    if (!std::filesystem::exists(stem + ".png") && !std::filesystem::exists(stem + ".json"))
+      return stem + ".png";
   }
 }
 
