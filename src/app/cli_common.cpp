@@ -56,14 +56,46 @@ Size parseSize(const std::string& text, const std::string& option) {
   return size;
 }
 
+std::vector<std::string> splitList(const std::string& text, const std::string& option) {
+  std::vector<std::string> items;
+  size_t start = 0;
+  while (true) {
+    size_t comma = text.find(',', start);
+    items.push_back(
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (items.back().empty())
+      throw InputError(option + " '" + text + "': entry " + std::to_string(items.size()) +
+                       " is empty; expected a comma-separated list");
+    for (size_t j = 0; j + 1 < items.size(); ++j)
+      if (items[j] == items.back())
+        throw InputError(option + " '" + text + "': '" + items.back() +
+                         "' is listed twice; list each once");
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
+}
+
+std::vector<double> parseNumberList(const std::string& text, const std::string& option, double min,
+                                    double max, bool integers, const std::string& expected) {
+  std::vector<double> values;
+  for (const std::string& item : splitList(text, option)) {
+    double value = 0.0;
+    const char* end = item.data() + item.size();
+    auto [stop, error] = std::from_chars(item.data(), end, value);
+    if (error != std::errc() || stop != end || !std::isfinite(value) || value < min ||
+        value > max || (integers && value != std::floor(value)))
+      throw InputError(option + " '" + item + "': expected " + expected);
+    values.push_back(value);
+  }
+  requireDistinct(values, option);
+  return values;
+}
+
 std::vector<ShadingModel> parseShadingModelList(const std::string& text,
                                                 const std::string& option) {
   std::vector<ShadingModel> models;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
+  for (const std::string& item : splitList(text, option))
     models.push_back(parseNamed(kShadingModelNames, item, option));
-  if (models.empty()) throw InputError(option + " '" + text + "': expected at least one model");
   return models;
 }
 

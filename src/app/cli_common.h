@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "core/base/errors.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
 #include "core/vulkan/context.h"
@@ -31,6 +32,28 @@ void checkNotInput(const std::filesystem::path& output, const std::string& input
 // CLI::Range for a floating-point option that also refuses NaN, which passes
 // CLI::Range (every comparison with NaN is false), and infinities.
 CLI::Validator finiteRange(double min, double max);
+
+// "a,b,c" -> {"a", "b", "c"}: a comma-separated list option's entries, in
+// order. Throws InputError naming the option for an empty entry (",a",
+// "a,,b", "a,") or one listed twice ("phong,phong" measured it twice).
+std::vector<std::string> splitList(const std::string& text, const std::string& option);
+
+// "0.5,1,2" -> {0.5, 1, 2}: splitList's entries read as finite numbers from
+// `min` to `max` (whole numbers when `integers`); throws InputError naming the entry and what
+// `expected` says.
+std::vector<double> parseNumberList(const std::string& text, const std::string& option, double min,
+                                    double max, bool integers, const std::string& expected);
+
+// Throws InputError naming the option when a parsed list holds a value twice
+// (for lists CLI11 splits itself, and entries that differ only in spelling).
+template <typename T>
+void requireDistinct(const std::vector<T>& values, const std::string& option) {
+  for (size_t i = 0; i < values.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (values[j] == values[i])
+        throw InputError(option + ": entries " + std::to_string(j + 1) + " and " +
+                         std::to_string(i + 1) + " are the same value; list each once");
+}
 
 // "flat,phong" -> models, in order; throws InputError naming a bad entry.
 std::vector<ShadingModel> parseShadingModelList(const std::string& text, const std::string& option);

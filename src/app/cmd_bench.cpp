@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -32,15 +31,15 @@ struct BenchCommandOptions {
   std::string output;
   std::string size = "1280x720";
   std::string modes = "unlit,flat,gouraud,phong,blinn-phong";
-  std::vector<float> tessellations{0.5f, 1.0f, 2.0f};
-  std::vector<uint32_t> msaa{1, 4};
+  std::string tessellations = "0.5,1,2";
+  std::string msaa = "1,4";
   std::string reference = "trace";
   std::string metric = "flip";
   std::string filters = "material";
   std::string shadows = "off";
   std::string lights = "scene";
   std::string lod = "off";
-  std::vector<int64_t> shadowSizes{kDefaultShadowMapSize};
+  std::string shadowSizes = std::to_string(kDefaultShadowMapSize);
   uint32_t frames = 60;
   uint32_t rounds = 2;
   JsonOutput json;
@@ -49,9 +48,7 @@ struct BenchCommandOptions {
 // "material,nearest" -> {none, Nearest}; throws InputError naming a bad entry.
 std::vector<std::optional<TextureFilter>> parseFilterList(const std::string& text) {
   std::vector<std::optional<TextureFilter>> filters;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  for (const std::string& item : splitList(text, "--filters")) {
     if (item == "material") {
       filters.push_back(std::nullopt);
     } else if (std::optional<TextureFilter> filter = valueOf(kTextureFilterNames, item)) {
@@ -61,84 +58,94 @@ std::vector<std::optional<TextureFilter>> parseFilterList(const std::string& tex
                        joinNames(namesOf(kTextureFilterNames)));
     }
   }
-  if (filters.empty()) throw InputError("--filters '" + text + "': expected at least one filter");
   return filters;
 }
 
 // "off,hard" -> {Off, Hard}; throws InputError naming a bad entry.
 std::vector<ShadowMethod> parseShadowList(const std::string& text) {
   std::vector<ShadowMethod> methods;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
+  for (const std::string& item : splitList(text, "--shadows"))
     methods.push_back(parseNamed(kShadowMethodNames, item, "--shadows"));
-  if (methods.empty()) throw InputError("--shadows '" + text + "': expected at least one method");
   return methods;
 }
 
-std::vector<uint32_t> checkShadowSizes(const std::vector<int64_t>& sizes) {
-  std::vector<uint32_t> checked;
-  for (int64_t size : sizes) {
-    if (size < 1 || size > 16384)
-      throw InputError("--shadow-sizes " + std::to_string(size) +
-                       ": expected map sizes from 1 to 16384 texels");
-    checked.push_back(uint32_t(size));
+// "1,4" -> {1, 4}; throws InputError naming a bad entry.
+std::vector<uint32_t> parseMsaaList(const std::string& text) {
+  std::vector<uint32_t> counts;
+  for (double count : parseNumberList(text, "--msaa", 1, 4, true, "1 or 4 samples")) {
+    if (count != 1 && count != 4)
+      throw InputError("--msaa '" + text + "': " + std::to_string(int(count)) +
+                       " samples; expected 1 or 4");
+    counts.push_back(uint32_t(count));
   }
-  return checked;
+  return counts;
+}
+
+std::vector<float> parseTessellationList(const std::string& text) {
+  std::vector<float> factors;
+  for (double factor : parseNumberList(text, "--tess", kMinTessellation, kMaxTessellation, false,
+                                       "tessellation factors from " +
+                                           std::to_string(kMinTessellation).substr(0, 5) + " to " +
+                                           std::to_string(int(kMaxTessellation))))
+    factors.push_back(float(factor));
+  return factors;
+}
+
+std::vector<uint32_t> parseShadowSizeList(const std::string& text) {
+  std::vector<uint32_t> sizes;
+  for (double size :
+       parseNumberList(text, "--shadow-sizes", 1, kMaxShadowMapSize, true,
+                       "map sizes from 1 to " + std::to_string(kMaxShadowMapSize) + " texels"))
+    sizes.push_back(uint32_t(size));
+  return sizes;
 }
 
 // "320x180,1280x720" -> frame sizes; throws InputError naming a bad entry.
 std::vector<glm::uvec2> parseSizeList(const std::string& text) {
   std::vector<glm::uvec2> sizes;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  for (const std::string& item : splitList(text, "--size")) {
     Size size = parseSize(item, "--size");
     sizes.emplace_back(size.width, size.height);
   }
-  if (sizes.empty()) throw InputError("--size '" + text + "': expected WIDTHxHEIGHT");
+  requireDistinct(sizes, "--size");
   return sizes;
 }
 
 // "scene,1,4" -> {0, 1, 4} (0: the scene's own lights); throws InputError.
 std::vector<uint32_t> parseLightList(const std::string& text) {
   std::vector<uint32_t> counts;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  for (const std::string& item : splitList(text, "--lights")) {
     if (item == "scene") {
       counts.push_back(0);
       continue;
     }
     char* end = nullptr;
-    long count = item.empty() ? 0 : std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || count < 1 || count > MAX_LIGHTS)
+    long count = std::strtol(item.c_str(), &end, 10);
+    if (*end != '\0' || count < 1 || count > MAX_LIGHTS)
       throw InputError("--lights '" + item + "': expected scene or a count from 1 to " +
                        std::to_string(MAX_LIGHTS));
     counts.push_back(uint32_t(count));
   }
-  if (counts.empty()) throw InputError("--lights '" + text + "': expected at least one count");
+  requireDistinct(counts, "--lights");
   return counts;
 }
 
 // "off,0.5,2" -> {0, 0.5, 2} (0: --lod off); throws InputError naming a bad entry.
 std::vector<float> parseLodList(const std::string& text) {
   std::vector<float> bounds;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  for (const std::string& item : splitList(text, "--lod")) {
     if (item == "off") {
       bounds.push_back(0.0f);
       continue;
     }
     char* end = nullptr;
-    float bound = item.empty() ? 0.0f : std::strtof(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !(bound >= 0.01f && bound <= 100.0f))
+    float bound = std::strtof(item.c_str(), &end);
+    if (*end != '\0' || !(bound >= 0.01f && bound <= 100.0f))
       throw InputError("--lod '" + item +
                        "': expected off or an error bound from 0.01 to 100 pixels");
     bounds.push_back(bound);
   }
-  if (bounds.empty()) throw InputError("--lod '" + text + "': expected at least one bound");
+  requireDistinct(bounds, "--lod");
   return bounds;
 }
 
@@ -194,19 +201,20 @@ void printResults(const std::vector<BenchResult>& results, const ErrorMetric& me
 
 int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   BenchAxes axes{parseShadingModelList(options.modes, "--modes"),
-                 options.tessellations,
-                 options.msaa,
+                 parseTessellationList(options.tessellations),
+                 parseMsaaList(options.msaa),
                  parseFilterList(options.filters),
                  parseShadowList(options.shadows),
-                 checkShadowSizes(options.shadowSizes),
+                 parseShadowSizeList(options.shadowSizes),
                  parseSizeList(options.size),
                  parseLightList(options.lights),
                  parseLodList(options.lod)};
   glm::uvec2 size = axes.sizes.front();
   // none: time only (a scaling sweep need not trace each size and light count).
   BenchOptions bench{options.frames, options.rounds,
-                     options.reference == "none" ? Reference{"none", "no error measured", {}}
-                                                 : findReference(options.reference, "--reference"),
+                     options.reference == "none"
+                         ? Reference{"none", "no error measured", {}}
+                         : findReference(options.reference, "--reference", "none"),
                      errorMetrics()};
   const ErrorMetric& charted = findErrorMetric(options.metric, "--metric");
   size_t chartedIndex = size_t(&charted - errorMetrics().data());
@@ -327,13 +335,9 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
                    "Shading models to measure; unlit is the constant-colour floor")
       ->capture_default_str();
   command->add_option("--tess", options->tessellations, "Tessellation factors, comma-separated")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(finiteRange(kMinTessellation, kMaxTessellation));
+      ->capture_default_str();
   command->add_option("--msaa", options->msaa, "Sample counts, comma-separated (1 or 4)")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::IsMember({1u, 4u}));
+      ->capture_default_str();
   command
       ->add_option("--filters", options->filters,
                    "Texture filters, comma-separated: material (each material's own sampler), "
@@ -346,7 +350,6 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
   command
       ->add_option("--shadow-sizes", options->shadowSizes,
                    "Shadow map sizes in texels, comma-separated (with shadows on)")
-      ->delimiter(',')
       ->capture_default_str();
   command
       ->add_option("--lights", options->lights,

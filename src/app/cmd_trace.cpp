@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "app/camera_options.h"
 #include "app/cli_common.h"
@@ -29,7 +30,7 @@ struct TraceOptions {
   uint32_t threads = 0;
   std::string shadows = "on";
   std::string fresnel = "on";
-  std::string epsilon;  // empty: TraceSettings' default
+  std::optional<std::string> epsilon;  // none: TraceSettings' default; '' is an error
   JsonOutput json;
 };
 
@@ -54,8 +55,7 @@ int runTrace(const TraceOptions& options, const GlobalOptions& global) {
   checkSamplesPerPixel(options.samplesPerPixel, "--spp");
   bool shadows = parseNamed(kOnOffNames, options.shadows, "--shadows");
   bool fresnel = parseNamed(kOnOffNames, options.fresnel, "--fresnel");
-  const float epsilon =
-      options.epsilon.empty() ? TraceSettings{}.epsilon : parseEpsilon(options.epsilon);
+  const float epsilon = options.epsilon ? parseEpsilon(*options.epsilon) : TraceSettings{}.epsilon;
   checkOutputPath(options.output);  // fail before the expensive work
   Scene scene = loadScene(options.scene, {global.maxTriangles});
   applyCameraOptions(options.camera, float(size.width) / float(size.height), scene.camera);

@@ -38,10 +38,11 @@ Reference traceReference(uint32_t samplesPerPixel, bool shadows) {
       }};
 }
 
-const Reference& findReference(const std::string& name, const std::string& option) {
+const Reference& findReference(const std::string& name, const std::string& option,
+                               const std::string& alsoAccepted) {
   for (const Reference& reference : references())
     if (reference.name == name) return reference;
-  std::string names;
+  std::string names = alsoAccepted;
   for (const Reference& reference : references())
     names += (names.empty() ? "" : ", ") + reference.name;
   throw InputError(option + " '" + name + "': expected " + names);

@@ -20,7 +20,10 @@ struct Reference {
 };
 
 // Throws InputError naming `option` and the references that exist.
-const Reference& findReference(const std::string& name, const std::string& option);
+// `alsoAccepted`: a name the caller handles itself, listed first in the
+// message (bench's none).
+const Reference& findReference(const std::string& name, const std::string& option,
+                               const std::string& alsoAccepted = {});
 
 // The ray tracer as a reference with other settings than the table's `trace`
 // (samplesPerPixel must be a square; see checkSamplesPerPixel).

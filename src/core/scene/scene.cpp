@@ -27,6 +27,11 @@ glm::mat4 Camera::projectionMatrix(float aspect, bool reversedZ) const {
   return glm::mat4(1.0f);
 }
 
+namespace {
+// Squared, it stays within float range (3.4e38).
+constexpr float kMaxCameraDistance = 1e18f;
+}  // namespace
+
 std::optional<CameraProblem> findCameraProblem(const Camera& camera) {
   using scene_json::formatNumber;
   if (!(camera.far > camera.near))
@@ -48,8 +53,14 @@ std::optional<CameraProblem> findCameraProblem(const Camera& camera) {
   if (glm::length(view) == 0.0f)
     return CameraProblem{"at", "at equals eye, so there is no viewing direction",
                          "a point other than eye"};
+  // Lengths beyond float range (a coordinate of 1e30 squared) would make
+  // the directions below zero and the message blame up.
+  if (!(glm::length(view) <= kMaxCameraDistance))
+    return CameraProblem{"eye", "eye and at are farther apart than 1e18", "eye within 1e18 of at"};
   if (glm::length(camera.up) == 0.0f)
     return CameraProblem{"up", "zero-length up vector", "a non-zero vector"};
+  if (!(glm::length(camera.up) <= kMaxCameraDistance))
+    return CameraProblem{"up", "up is longer than 1e18", "a vector of length up to 1e18"};
   // lookAt needs up x (at - eye) to define the camera's x axis.
   if (glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up))) < 1e-6f)
     return CameraProblem{"up", "up is parallel to the viewing direction at - eye",
