@@ -46,9 +46,10 @@ using mat4 = glm::mat4;
 #define BILLBOARD_SCREEN 0       // parallel to the image plane
 #define BILLBOARD_SPHERICAL 1    // facing the eye point, its up kept near BillboardInstance::up
 #define BILLBOARD_CYLINDRICAL 2  // turning about BillboardInstance::up only
-// An object's impostor (core/scene/impostor.h): the quad lies across the
-// captured direction, its axes BillboardInstance::right and up, its texture
-// the atlas cell BillboardInstance::right.w of DrawConstants::optics.z per side.
+// An object's impostor (core/scene/impostor.h): the quad faces the eye
+// point through the atlas centre; its texture is three cells of the atlas
+// (DrawConstants::optics.z per side), each found where the view ray meets
+// the plane it was captured in, blended (BillboardInstance says where).
 #define BILLBOARD_IMPOSTOR 3
 // The most instances one object may have, and a scene in all: each visible
 // one is 64 bytes per frame in flight; a million is ~1 s per frame on lavapipe.
@@ -207,10 +208,15 @@ struct DrawConstants {
 
 // One billboard instance of one frame, in eye space (written by the host
 // per frame for the instances that survive culling).
+// Impostors use them otherwise: centre.xyz is the atlas centre and w the
+// square quad's side; up the mesh's rotation to eye space (a unit
+// quaternion, xyzw); right.xyz the three blended atlas cells' indices and
+// outline.xyz their weights (the floats' bits); core/scene/impostor.h,
+// impostorBlend.
 struct BillboardInstance {
   vec4 centre;  // xyz = the anchor point, eye space; w = the quad's width
   vec4 up;      // xyz = unit axis (cylindrical) or up (spherical), eye space; w = the height
-  vec4 right;   // impostors: xyz = the captured view's unit right, eye space; w = its atlas cell
+  vec4 right;   // unused but by impostors
   // Trimmed copies (DrawConstants::optics.w = 1): the corners of the triangle
   // drawn instead of the quad, in quad coordinates (x across, y up, 0..1 on
   // the quad), two halves each (packHalf2x16): x = corner 0, y = 1, z = 2.

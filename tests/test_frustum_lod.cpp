@@ -377,6 +377,62 @@ TEST(Impostor, OctahedralCellsCoverTheSphereWithinTheParallaxAngle) {
   }
 }
 
+// The blend: three cells with weights from 0 to 1 summing to 1; a view from
+// a cell's own direction takes that cell alone; the weights move little when
+// the view does (no jump between cells); and the weighted angle stays within
+// impostorBlendAngle, itself within the nearest cell's angle.
+TEST(Impostor, BlendWeighsThreeCellsContinuously) {
+  std::mt19937 random(11);
+  std::normal_distribution<float> normal;
+  for (uint32_t cells : {4u, 16u}) {
+    float blendAngle = impostorBlendAngle(cells);
+    EXPECT_LE(blendAngle, impostorParallaxAngle(cells) * 1.0001f);
+    auto weightOf = [&](const ImpostorBlend& blend, uint32_t index) {
+      float sum = 0.0f;
+      for (size_t k = 0; k < 3; ++k)
+        if (blend.cells[k].index(cells) == index) sum += blend.weights[k];
+      return sum;
+    };
+    for (int i = 0; i < 2000; ++i) {
+      glm::vec3 d = glm::normalize(glm::vec3(normal(random), normal(random), normal(random)));
+      ImpostorBlend blend = impostorBlend(d, cells);
+      float sum = 0.0f, angle = 0.0f;
+      for (size_t k = 0; k < 3; ++k) {
+        ASSERT_GE(blend.weights[k], -1e-6f);
+        ASSERT_LE(blend.weights[k], 1.0f + 1e-6f);
+        ASSERT_LT(blend.cells[k].column, cells);
+        ASSERT_LT(blend.cells[k].row, cells);
+        sum += blend.weights[k];
+        angle += blend.weights[k] *
+                 std::acos(std::clamp(glm::dot(d, impostorCellDirection(blend.cells[k], cells)),
+                                      -1.0f, 1.0f));
+      }
+      EXPECT_NEAR(sum, 1.0f, 1e-5f);
+      EXPECT_LE(angle, blendAngle * 1.0001f);
+      // A nudge of 0.001 rad changes no cell's weight by more than a few
+      // hundredths (the nearest cell alone would jump from 0 to 1). Views
+      // from above the horizon: below it the map's outer edge wraps round.
+      if (d.y < 0.0f) continue;
+      glm::vec3 nudged =
+          glm::normalize(d + 0.001f * glm::normalize(glm::cross(d, glm::vec3(0.3f, 1, 0.2f))));
+      ImpostorBlend next = impostorBlend(nudged, cells);
+      for (size_t k = 0; k < 3; ++k) {
+        uint32_t index = next.cells[k].index(cells);
+        EXPECT_NEAR(weightOf(next, index), weightOf(blend, index), 0.05f)
+            << cells << " cells, direction " << d.x << "," << d.y << "," << d.z;
+      }
+    }
+    for (uint32_t index = 0; index < cells * cells; ++index) {
+      ImpostorCell cell{index % cells, index / cells};
+      ImpostorBlend own = impostorBlend(impostorCellDirection(cell, cells), cells);
+      EXPECT_NEAR(weightOf(own, index), 1.0f, 1e-4f) << index;
+    }
+  }
+  std::printf("blend angle: 4 cells %.2f deg, 16 cells %.2f deg\n",
+              double(glm::degrees(impostorBlendAngle(4))),
+              double(glm::degrees(impostorBlendAngle(16))));
+}
+
 // The error the chain ranks an impostor by: the parallax part radius *
 // sin(angle) plus half a texel, linear in the radius.
 TEST(Impostor, ErrorIsParallaxPlusHalfATexel) {

@@ -111,9 +111,11 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
       ->add_option("--impostors", options.impostors,
                    "With --lod auto, each opaque untextured mesh's chain ends in an impostor: a "
                    "quad showing the mesh as captured from the nearest of 16x16 directions "
-                   "(on), or in its coarsest mesh (off)")
+                   "(on), from the three around the view direction blended (blend: no seams "
+                   "between cells, three times the texture lookups), or in its coarsest mesh "
+                   "(off)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"on", "off"}));
+      ->check(CLI::IsMember({"on", "blend", "off"}));
 }
 
 void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
@@ -127,7 +129,8 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
   settings.lod = options.lod == "auto";
   settings.lodErrorPixels = options.lodError;
   settings.instancing = options.instancing == "on";
-  settings.impostorCells = options.impostors == "on" ? kImpostorCells : 0;
+  settings.impostorCells = options.impostors != "off" ? kImpostorCells : 0;
+  settings.impostorBlend = options.impostors == "blend";
   settings.trimBillboards = options.billboardOutline == "trimmed";
 }
 

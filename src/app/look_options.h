@@ -39,7 +39,7 @@ struct LookOptions {
   std::string lod = "off";                   // --lod auto|off (view sets "auto" before adding)
   float lodError = 0.5f;                     // --lod-error, pixels
   std::string instancing = "on";             // --instancing on|off
-  std::string impostors = "on";              // --impostors on|off
+  std::string impostors = "on";              // --impostors on|blend|off
   std::string billboardOutline = "trimmed";  // --billboard-outline trimmed|quad
 };
 

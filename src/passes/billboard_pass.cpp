@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cstring>
 #include <glm/gtc/packing.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "core/base/radix_sort.h"
 #include "core/scene/frustum.h"
@@ -47,6 +48,10 @@ BillboardPass::BillboardPass(const Context& context, VkFormat colorFormat,
   layout_ = PipelineLayout(device, layout);
   vertex_ = loadShader(device, "billboard.vert");
   fragment_ = loadShader(device, "billboard.frag");
+  // Separate modules: the blend's inputs would cost every other billboard
+  // their set-up per triangle on llvmpipe, used or not.
+  blendVertex_ = loadShader(device, "billboard_impostor_blend.vert");
+  blendFragment_ = loadShader(device, "billboard_impostor_blend.frag");
 
   // One set per frame slot, sized once.
   VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFrameSlots};
@@ -99,7 +104,8 @@ BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const Forwar
           billboard.blended,
           maps,
           int(billboard.constants.optics.x),
-          frame.lightSet};
+          frame.lightSet,
+          impostor && frame.impostorBlend};
 }
 
 void BillboardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> models,
@@ -140,11 +146,11 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vertex_;
+  stages[0].module = key.impostorBlend ? blendVertex_ : vertex_;
   stages[0].pName = "main";
   stages[0].pSpecializationInfo = &specialization;
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = fragment_;
+  stages[1].module = key.impostorBlend ? blendFragment_ : fragment_;
   stages[1].pName = "main";
   stages[1].pSpecializationInfo = &specialization;
   // No vertex buffer: the quad's corners come from gl_VertexIndex.
@@ -182,23 +188,41 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
 }
 
 gpu::BillboardInstance impostorInstance(const ImpostorAtlas& atlas, const glm::mat4& model,
-                                        const glm::mat4& view, glm::vec3 eyeWorld) {
-  // The view direction in mesh space picks the cell; the cell's frame, taken
-  // to eye space, lays the quad where its image was captured.
+                                        const glm::mat4& view, glm::vec3 eyeWorld,
+                                        bool blendCells) {
+  // The view direction in mesh space picks the cells.
   glm::vec3 eye(glm::inverse(model) * glm::vec4(eyeWorld, 1.0f));
   glm::vec3 towards = eye - atlas.centre;
   float length = glm::length(towards);
   glm::vec3 direction = length > 0.0f ? towards / length : glm::vec3(0.0f, 0.0f, 1.0f);
-  ImpostorCell cell = impostorCell(direction, atlas.cells);
-  ImpostorFrame frame = impostorFrame(impostorCellDirection(cell, atlas.cells));
   glm::mat4 modelView = view * model;
-  glm::vec3 right = glm::mat3(modelView) * frame.right;
-  glm::vec3 up = glm::mat3(modelView) * frame.up;
-  float width = 2.0f * atlas.halfSize * glm::length(right);
-  float height = 2.0f * atlas.halfSize * glm::length(up);
-  return {glm::vec4(glm::vec3(modelView * glm::vec4(atlas.centre, 1.0f)), width),
-          glm::vec4(glm::normalize(up), height),
-          glm::vec4(glm::normalize(right), float(cell.index(atlas.cells))), glm::uvec4(0u)};
+  if (!blendCells) {
+    // The cell's frame, taken to eye space, lays the quad where its image
+    // was captured.
+    ImpostorCell cell = impostorCell(direction, atlas.cells);
+    ImpostorFrame frame = impostorFrame(impostorCellDirection(cell, atlas.cells));
+    glm::vec3 right = glm::mat3(modelView) * frame.right;
+    glm::vec3 up = glm::mat3(modelView) * frame.up;
+    float width = 2.0f * atlas.halfSize * glm::length(right);
+    float height = 2.0f * atlas.halfSize * glm::length(up);
+    return {glm::vec4(glm::vec3(modelView * glm::vec4(atlas.centre, 1.0f)), width),
+            glm::vec4(glm::normalize(up), height),
+            glm::vec4(glm::normalize(right), float(cell.index(atlas.cells))), glm::uvec4(0u)};
+  }
+  ImpostorBlend blend = impostorBlend(direction, atlas.cells);
+  glm::mat3 linear(modelView);
+  float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  glm::quat rotation = glm::normalize(glm::quat_cast(
+      glm::mat3(glm::normalize(linear[0]), glm::normalize(linear[1]), glm::normalize(linear[2]))));
+  return {
+      glm::vec4(glm::vec3(modelView * glm::vec4(atlas.centre, 1.0f)),
+                2.0f * atlas.halfSize * scale),
+      glm::vec4(rotation.x, rotation.y, rotation.z, rotation.w),
+      glm::vec4(float(blend.cells[0].index(atlas.cells)), float(blend.cells[1].index(atlas.cells)),
+                float(blend.cells[2].index(atlas.cells)), 0.0f),
+      glm::uvec4(std::bit_cast<uint32_t>(blend.weights[0]),
+                 std::bit_cast<uint32_t>(blend.weights[1]),
+                 std::bit_cast<uint32_t>(blend.weights[2]), 0u)};
 }
 
 namespace {
@@ -241,7 +265,8 @@ std::pair<glm::vec3, glm::vec3> quadAxes(int kind, glm::vec3 anchor, glm::vec3 u
 BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& scene,
                                            const glm::mat4& view, const glm::mat4& projection,
                                            bool cull, const BillboardTrim& trim,
-                                           std::span<const ImpostorCopy> impostors) {
+                                           std::span<const ImpostorCopy> impostors,
+                                           bool impostorBlend) {
   assert(frameSlot < kFrameSlots && instances_[frameSlot]);
   BillboardFrame result;
   Frustum frustum = frustumFromMatrix(projection * view);
@@ -336,8 +361,8 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     uint32_t b = impostors[order[i]].billboard;
     BillboardDraw draw{b, result.instances, 0, 0.0f};
     for (; i < order.size() && impostors[order[i]].billboard == b; ++i) {
-      out[result.instances++] =
-          impostorInstance(scene.billboards[b].impostor, impostors[order[i]].model, view, eyeWorld);
+      out[result.instances++] = impostorInstance(
+          scene.billboards[b].impostor, impostors[order[i]].model, view, eyeWorld, impostorBlend);
       ++draw.instanceCount;
     }
     result.cutOut.push_back(draw);

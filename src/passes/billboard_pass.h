@@ -58,11 +58,16 @@ struct ImpostorCopy {
   glm::mat4 model{1.0f};
 };
 
-// An impostor copy's instance: the atlas cell nearest the direction from
-// the object to the eye (world space), its quad across that cell's
-// direction through the atlas centre, sized by the model matrix's scale.
+// An impostor copy's instance: the three atlas cells blended for the
+// direction from the object to the eye (world space) and their weights
+// (impostorBlend), the mesh's rotation to eye space, and its quad's width
+// by the model matrix's largest scale. The quad itself faces the eye
+// (billboard.vert) and each fragment finds the cells' images on it
+// (billboard.frag).
+// `blend` off: the nearest cell alone, its quad across that cell's
+// direction (BillboardInstance's first meaning).
 gpu::BillboardInstance impostorInstance(const ImpostorAtlas& atlas, const glm::mat4& model,
-                                        const glm::mat4& view, glm::vec3 eyeWorld);
+                                        const glm::mat4& view, glm::vec3 eyeWorld, bool blend);
 
 // What prepareFrame culled and laid out for one frame.
 struct BillboardFrame {
@@ -92,7 +97,8 @@ class BillboardPass {
   // to draw them. The slot's previous frame must be finished.
   BillboardFrame prepareFrame(uint32_t frameSlot, const GpuScene& scene, const glm::mat4& view,
                               const glm::mat4& projection, bool cull, const BillboardTrim& trim,
-                              std::span<const ImpostorCopy> impostors = {});
+                              std::span<const ImpostorCopy> impostors = {},
+                              bool impostorBlend = false);
   // Records `draws` (of prepareFrame's, for this slot) inside an active
   // dynamic-rendering scope; adjacent draws of one billboard over adjacent
   // instances become one instanced draw.
@@ -112,6 +118,7 @@ class BillboardPass {
     uint32_t textureMaps;  // SPEC_TEXTURE_MAPS
     int kind;              // SPEC_BILLBOARD_KIND
     uint32_t lightSet;     // ForwardFrame::lightSet
+    bool impostorBlend;    // an impostor drawn with billboard_impostor_blend.*
     auto operator<=>(const Variant&) const = default;
   };
   Pipeline createPipeline(const Variant& key) const;
@@ -126,6 +133,7 @@ class BillboardPass {
   DescriptorSetLayout instanceSetLayout_;
   PipelineLayout layout_;
   ShaderModule vertex_, fragment_;
+  ShaderModule blendVertex_, blendFragment_;  // IMPOSTOR_BLEND
   DescriptorPool pool_;
   Buffer instances_[kFrameSlots];  // BillboardInstance[], host-visible
   VkDescriptorSet sets_[kFrameSlots] = {};

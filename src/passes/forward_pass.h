@@ -88,6 +88,7 @@ struct ForwardFrame {
   // camera and lights hold still sets them (Renderer::compileLights). An id
   // of the passes' LightSets; 0: none.
   uint32_t lightSet = 0;
+  bool impostorBlend = false;  // FrameSettings::impostorBlend (the billboard pass's)
 };
 
 // The TEXTURE_* flags a textured draw's pipeline applies (SPEC_TEXTURE_MAPS):

@@ -373,7 +373,8 @@ ForwardFrame Renderer::forwardFrame(const GpuScene& scene, const FrameSettings& 
           .bump = settings.textures.bump,
           .mipTint = settings.textures.mipTint,
           .materialConstants = settings.materialConstants &&
-                               ForwardPass::materialCount(scene) <= kMaxMaterialPipelines};
+                               ForwardPass::materialCount(scene) <= kMaxMaterialPipelines,
+          .impostorBlend = settings.impostorBlend};
 }
 
 void Renderer::waitForFrame(RenderStats& stats) {
@@ -431,8 +432,9 @@ void Renderer::recordScene(const GpuScene& scene, const Scene& source, RenderSta
     BillboardTrim trim{settings.trimBillboards && settings.msaaSamples == 1,
                        settings.textures.filterOverride,
                        std::abs(projection[1][1]) * 0.5f * float(settings.height)};
-    billboards = billboards_.prepareFrame(frameSlot(), scene, view, projection,
-                                          settings.frustumCulling, trim, impostors);
+    billboards =
+        billboards_.prepareFrame(frameSlot(), scene, view, projection, settings.frustumCulling,
+                                 trim, impostors, settings.impostorBlend);
     stats.billboardInstances = billboards.instances;
     stats.culledInstances = billboards.culled;
     stats.trimmedInstances = billboards.trimmed;

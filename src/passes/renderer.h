@@ -117,6 +117,12 @@ struct FrameSettings {
   // read when the scene is uploaded: renderToImage and renderSequence pass
   // it on, the viewer uploads with it.
   uint32_t impostorCells = kImpostorCells;
+  // Impostors drawn from the three atlas cells around the view direction,
+  // blended (core/scene/impostor.h, impostorBlend), instead of the nearest
+  // one: no seams where neighbouring copies take different cells and no
+  // jump when a turning view crosses into another cell, for three times
+  // the texture lookups per fragment (README, "Impostors").
+  bool impostorBlend = false;
   // The visible copies of an "instances" block drawn as one instanced draw
   // per level (batchInstances); off draws them one by one, to show the
   // image is the same.

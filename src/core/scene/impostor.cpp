@@ -66,19 +66,57 @@ ImpostorFrame impostorFrame(glm::vec3 direction) {
   return {right, glm::cross(direction, right)};
 }
 
-float impostorParallaxAngle(uint32_t cells) {
+ImpostorBlend impostorBlend(glm::vec3 direction, uint32_t cells) {
+  // Grid coordinates in which cell (c, r)'s centre is the point (c, r).
+  glm::vec2 grid = (octahedralEncode(direction) + 1.0f) * 0.5f * float(cells) - 0.5f;
+  glm::vec2 base = glm::floor(grid);
+  glm::vec2 f = grid - base;
+  auto cell = [&](float dx, float dy) {
+    auto clamped = [&](float index) { return uint32_t(std::clamp(index, 0.0f, float(cells - 1))); };
+    return ImpostorCell{clamped(base.x + dx), clamped(base.y + dy)};
+  };
+  // The grid square's lower-left or upper-right triangle.
+  if (f.x + f.y <= 1.0f)
+    return {{cell(0, 0), cell(1, 0), cell(0, 1)}, {1.0f - f.x - f.y, f.x, f.y}};
+  return {{cell(1, 1), cell(1, 0), cell(0, 1)}, {f.x + f.y - 1.0f, 1.0f - f.y, 1.0f - f.x}};
+}
+
+namespace {
+// The largest of `angle(direction)` over a grid 16 times finer than the
+// cells on the octahedral square, corners included.
+template <typename Angle>
+float largestOverDirections(uint32_t cells, Angle angle) {
   uint32_t samples = cells * 16;
   float largest = 0.0f;
   for (uint32_t j = 0; j <= samples; ++j)
     for (uint32_t i = 0; i <= samples; ++i) {
       glm::vec2 point(float(i) / float(samples) * 2.0f - 1.0f,
                       float(j) / float(samples) * 2.0f - 1.0f);
-      glm::vec3 direction = octahedralDecode(point);
-      glm::vec3 captured = impostorCellDirection(impostorCell(direction, cells), cells);
-      float cosine = std::clamp(glm::dot(direction, captured), -1.0f, 1.0f);
-      largest = std::max(largest, std::acos(cosine));
+      largest = std::max(largest, angle(octahedralDecode(point)));
     }
   return largest;
+}
+
+float angleBetween(glm::vec3 a, glm::vec3 b) {
+  return std::acos(std::clamp(glm::dot(a, b), -1.0f, 1.0f));
+}
+}  // namespace
+
+float impostorParallaxAngle(uint32_t cells) {
+  return largestOverDirections(cells, [&](glm::vec3 direction) {
+    return angleBetween(direction, impostorCellDirection(impostorCell(direction, cells), cells));
+  });
+}
+
+float impostorBlendAngle(uint32_t cells) {
+  return largestOverDirections(cells, [&](glm::vec3 direction) {
+    ImpostorBlend blend = impostorBlend(direction, cells);
+    float angle = 0.0f;
+    for (size_t k = 0; k < 3; ++k)
+      angle +=
+          blend.weights[k] * angleBetween(direction, impostorCellDirection(blend.cells[k], cells));
+    return angle;
+  });
 }
 
 float impostorHalfSize(float radius, uint32_t cellTexels) {
@@ -89,7 +127,8 @@ float impostorHalfSize(float radius, uint32_t cellTexels) {
 
 float impostorError(float radius, uint32_t cells, uint32_t cellTexels) {
   float texel = 2.0f * impostorHalfSize(radius, cellTexels) / float(cellTexels);
-  return radius * std::sin(impostorParallaxAngle(cells)) + 0.5f * texel;
+  float angle = std::max(impostorParallaxAngle(cells), impostorBlendAngle(cells));
+  return radius * std::sin(angle) + 0.5f * texel;
 }
 
 }  // namespace shadelab

@@ -11,6 +11,7 @@
 // -1 + 2 (column + 1) / n] of the first coordinate, rows the second; its
 // direction is the one at its centre. With an even n no centre lies on the
 // y axis, so every cell has a well-defined frame (right = y x d).
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 
@@ -65,17 +66,38 @@ struct ImpostorFrame {
 };
 ImpostorFrame impostorFrame(glm::vec3 direction);
 
+// The cells a view direction is drawn from, blended (billboard.frag): the
+// three cells whose centres make the triangle of the cell grid that the
+// direction's octahedral point falls in, weighted by its barycentric
+// coordinates there. The weights are at least 0 and sum to 1; a direction at
+// a cell's centre takes that cell alone, and they change continuously with
+// the direction, so a turning view cross-fades between cells instead of
+// jumping. Past the centres of the outermost cells (views from below, by
+// the octahedral map's outer edge) the grid is clamped.
+struct ImpostorBlend {
+  std::array<ImpostorCell, 3> cells;
+  std::array<float, 3> weights;
+};
+ImpostorBlend impostorBlend(glm::vec3 direction, uint32_t cells);
+
 // The largest angle, in radians, between any direction and the direction of
 // the cell it falls in (measured over a grid 16 times finer than the cells,
-// corners included).
+// corners included): 54.7 degrees for 4 cells, 15.1 for 16, 7.6 for 32.
 float impostorParallaxAngle(uint32_t cells);
+// The same for the blend: the largest, over all directions, of the weighted
+// mean of the angles between the direction and its three cells'
+// directions. 54.7 degrees for 4 cells, 14.6 for 16, 7.5 for 32: never more
+// than impostorParallaxAngle at these counts.
+float impostorBlendAngle(uint32_t cells);
 
 // What an impostor of an object whose points lie within `radius` of the
-// atlas centre can be off by, in the object's units: the image puts a point
-// h in front of or behind the quad on the quad, h along the captured
-// direction from where it is; seen up to the parallax angle away from that
+// atlas centre can be off by, in the object's units: a cell's image puts a
+// point h in front of or behind its plane on the plane, h along the
+// captured direction from where it is; seen an angle away from that
 // direction the two are h sin(angle) apart on the screen, at most radius
-// sin(angle); plus half a texel of a cell. The level-of-detail chain ranks
+// sin(angle) (the blend weighs its cells' images: its point lies on average
+// that far away, at its angle); plus half a texel of a cell. The larger of
+// the two angles, so that the bound holds drawn either way. The level-of-detail chain ranks
 // the impostor by it.
 float impostorError(float radius, uint32_t cells, uint32_t cellTexels);
 
