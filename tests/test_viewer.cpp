@@ -15,6 +15,7 @@
 
 #include "core/scene/lod.h"
 #include "core/scene/scene.h"
+#include "core/scene/scene_json.h"
 #include "gpu_test_support.h"
 #include "run_command.h"
 #include "view/camera_controller.h"
@@ -440,6 +441,31 @@ TEST_F(Viewer, WaitingForTheReferenceWhileMinimisedEnds) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("wait-reference: the window is minimised"), std::string::npos)
       << r.output;
+}
+
+// Key I blends the impostors' cells: the shot is the headless render with
+// --impostors blend, and measured closer to it than to the nearest cell's.
+TEST_F(Viewer, ImpostorBlendKeyMatchesHeadlessBlend) {
+  std::string scene = std::string(SHADELAB_TEST_DATA_DIR) + "/impostor.json";
+  CommandResult r =
+      view("key O\nkey I\nframes 3\nscreenshot blend.png\n", scene + " --lod auto --lod-error 100");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("impostors: three cells blended"), std::string::npos) << r.output;
+  RenderSettings settings{kWidth, kHeight, ShadingModel::Phong};
+  settings.lod = true;
+  settings.lodErrorPixels = 100.0f;
+  settings.impostorBlend = true;
+  RenderResult blended = renderer().renderToImage(loadSceneJson(scene), settings);
+  EXPECT_EQ(blended.stats.impostors, 1u);
+  settings.impostorBlend = false;
+  RenderResult nearest = renderer().renderToImage(loadSceneJson(scene), settings);
+  ImageU8 shot = readImageU8(path("blend.png"));
+  EXPECT_TRUE(matchesImage(encodeSrgb8(blended.image), shot));
+  double toBlend = compareImages(encodeSrgb8(blended.image), shot).rmse;
+  double toNearest = compareImages(encodeSrgb8(nearest.image), shot).rmse;
+  std::printf("impostor shot: RMSE %.3f to the blend, %.3f to the nearest cell\n", toBlend,
+              toNearest);
+  EXPECT_LT(2.0 * toBlend, toNearest);
 }
 
 // Key P takes the first number whose image and camera sidecar are both

@@ -149,6 +149,13 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
          if (v.applySettings(next))
            v.say("shadows: " + std::string(nameOf(kShadowMethodNames, next.shadows)));
        }},
+      {'I', "I", "impostors: from the nearest atlas cell / the three around the view, blended",
+       [](Viewer& v) {
+         FrameSettings next = v.settings_;
+         next.impostorBlend = !next.impostorBlend;
+         if (v.applySettings(next))
+           v.say(next.impostorBlend ? "impostors: three cells blended" : "impostors: nearest cell");
+       }},
       {'M', "M", "mip-level tint on / off",
        [](Viewer& v) {
          TextureOptions next = v.settings_.textures;
