@@ -63,6 +63,20 @@ TEST_F(Cli, RenderWritesPngOfRequestedSize) {
   EXPECT_EQ(filesLeft(), 1u);  // no temporary left beside it
 }
 
+// A texture that is a folder: one expectation in the message (there were
+// two: "..., expected a regular file (material 'm'), expected an image file").
+TEST_F(Cli, TextureOfTheWrongKindSaysWhatWasExpectedOnce) {
+  std::filesystem::create_directories(out("t.png"));
+  std::ofstream(out("s.json"))
+      << R"({"materials": {"m": {"diffuse_map": "t.png"}}, "objects": [{"shape": "plane", "material": "m"}]})";
+  CommandResult r = run("render " + out("s.json") + " -o " + out("a.png"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("is a directory, expected an image (material 'm')\n"), std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("expected an image file"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out("a.png")));
+}
+
 TEST_F(Cli, RenderWritesExrWhenAsked) {
   CommandResult r = run("render default -o " + out("a.exr") + " --size 32x32 --mode gouraud");
   ASSERT_EQ(r.exitCode, 0) << r.output;

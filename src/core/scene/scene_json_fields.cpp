@@ -53,6 +53,11 @@ void Field::fail(const std::string& problem, const std::string& expected) const 
                    ", expected " + expected);
 }
 
+void Field::fail(const std::string& problemAndExpected) const {
+  throw InputError(*source_ + ": " + (path_.empty() ? "top level" : path_) + ": " +
+                   problemAndExpected);
+}
+
 void Field::wrongType(const std::string& expected) const {
   throw InputError(*source_ + ": " + (path_.empty() ? "top level" : path_) + ": expected " +
                    expected + ", got " + describe(json()));

@@ -28,6 +28,8 @@ class Field {
 
   // Throws InputError "<source>: <path>: <problem>, expected <expected>".
   [[noreturn]] void fail(const std::string& problem, const std::string& expected) const;
+  // For a problem whose message already says what was expected.
+  [[noreturn]] void fail(const std::string& problemAndExpected) const;
   // Throws InputError "<source>: <path>: expected <expected>, got <the value>".
   [[noreturn]] void wrongType(const std::string& expected) const;
 

@@ -74,8 +74,11 @@ int32_t TextureLibrary::fileTexture(const Field& field, const std::string& owner
   try {
     return add(key, loadTextureFile(path, role));
   } catch (const InputError& error) {
-    field.fail(std::string(error.what()) + " (" + owner + ")",
-               "an image file (PNG, JPEG, HDR, EXR) relative to the scene file");
+    // A file of the wrong kind says what it should have been (a regular
+    // file); one that does not decode, what it should hold.
+    std::string problem = std::string(error.what()) + " (" + owner + ")";
+    if (problem.find("expected") != std::string::npos) field.fail(problem);
+    field.fail(problem, "an image file (PNG, JPEG, HDR, EXR) relative to the scene file");
   }
 }
 
