@@ -248,6 +248,16 @@ TEST_F(ImpostorTest, ParallaxStaysWithinTheBoundAndShrinksWithMoreCells) {
   }
   EXPECT_LT(results[1].meanOutlinePixels, results[0].meanOutlinePixels);
   EXPECT_LT(results[1].meanFlip, results[0].meanFlip);
+  // Blended, the same bound holds (impostorError takes the larger angle).
+  ImpostorParallax blended =
+      measureImpostorParallax(renderer(), {16}, 12, kWidth, kHeight, true).front();
+  std::printf("16 cells blended: bound %.2f px, outline mean %.2f max %.2f px, FLIP %.4f\n",
+              blended.boundPixels, blended.meanOutlinePixels, blended.maxOutlinePixels,
+              blended.meanFlip);
+  EXPECT_TRUE(blended.blend);
+  EXPECT_TRUE(blended.allImpostors);
+  EXPECT_LT(blended.maxOutlinePixels, blended.boundPixels);
+  EXPECT_GT(blended.meanOutlinePixels, 0.0);
 }
 
 }  // namespace

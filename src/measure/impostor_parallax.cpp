@@ -136,7 +136,7 @@ ImageU8 sideBySide(const ImageU8& left, const ImageU8& right, uint32_t zoom) {
 std::vector<ImpostorParallax> measureImpostorParallax(Renderer& renderer,
                                                       const std::vector<uint32_t>& cellCounts,
                                                       uint32_t views, uint32_t width,
-                                                      uint32_t height) {
+                                                      uint32_t height, bool blend) {
   Teapot teapot = teapotScene();
   float distance = viewDistance(teapot.radius, height);
   std::vector<Camera> cameras = viewsAround(teapot.centre, distance, std::max(1u, views));
@@ -159,8 +159,9 @@ std::vector<ImpostorParallax> measureImpostorParallax(Renderer& renderer,
   for (uint32_t cells : cellCounts) {
     ImpostorParallax result;
     result.cells = cells;
+    result.blend = blend;
     result.views = uint32_t(cameras.size());
-    float angle = impostorParallaxAngle(cells);
+    float angle = blend ? impostorBlendAngle(cells) : impostorParallaxAngle(cells);
     result.angleDegrees = glm::degrees(double(angle));
     result.boundPixels =
         double(impostorError(teapot.radius, cells, kImpostorCellTexels)) * pixelsPerUnitAtCentre;
@@ -170,6 +171,7 @@ std::vector<ImpostorParallax> measureImpostorParallax(Renderer& renderer,
     lod.lod = true;
     lod.lodErrorPixels = 100.0f;  // the impostor's error is far below: always chosen
     lod.impostorCells = cells;
+    lod.impostorBlend = blend;
     uint32_t maskImpostors = 0, shadedImpostors = 0;
     lod.shadingModel = ShadingModel::Unlit;
     std::vector<ImageU8> masks = renderViews(renderer, white, lod, cameras, maskImpostors);
