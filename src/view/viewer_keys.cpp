@@ -283,7 +283,8 @@ OverlayText Viewer::overlayText() const {
                         withThousands(gpuScene_.triangles) + " in the scene" +
                         (settings_.lod
                              ? "; lod " + std::to_string(coarserDraws_) + " draws simplified, " +
-                                   std::to_string(impostors_) + " as impostors"
+                                   std::to_string(impostors_) + " as impostors" +
+                                   (impostors_ > 0 && settings_.impostorBlend ? " (blended)" : "")
                              : ""));
   if (billboardCopies_ > 0)
     text.status.push_back("billboards " + withThousands(billboardCopies_) + " copies, " +
