@@ -10,6 +10,7 @@
 #extension GL_GOOGLE_include_directive : require
 #define SHADOW_LOOKUP
 #include "bump.glsl"
+#include "impostor_atlas.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) flat in vec3 inNormal;
@@ -48,11 +49,7 @@ vec4 impostorTexel(bool bumpMapped, out vec3 normal, out vec3 position) {
     float t = abs(across) > 1e-20 ? dot(inImpostorCentre - origin, facing) / across : 0.0;
     vec3 local = origin + t * ray - inImpostorCentre;
     vec2 corner = vec2(dot(local, right), dot(local, up)) / (2.0 * halfSide) + 0.5;
-    // The cell's square of the atlas; textureCoordinate flips v, row 0 on top.
-    int cell = int(inCellUp[k].w);
-    vec2 origin2 = vec2(float(cell % cells), float(cell / cells));
-    vec2 st = textureCoordinate(vec2((origin2.x + corner.x) / float(cells),
-                                     1.0 - (origin2.y + 1.0 - corner.y) / float(cells)));
+    vec2 st = textureCoordinate(impostorAtlasCoordinate(int(inCellUp[k].w), cells, corner));
     vec4 texel = texture(diffuseMap, st);
     // Off the cell's square lies another cell's image.
     bool inside = abs(across) > 1e-20 && all(greaterThanEqual(corner, vec2(0.0))) &&
@@ -64,8 +61,7 @@ vec4 impostorTexel(bool bumpMapped, out vec3 normal, out vec3 position) {
       vec3 n = mapped.xyz * 2.0 - 1.0;
       normal += coverage * (right * (n.x * draw.texturing.z) + up * (n.y * draw.texturing.z) +
                             facing * n.z);
-      float height = ((mapped.a * 255.0 - 1.0) / 254.0) * 2.0 - 1.0;
-      position += coverage * (inImpostorCentre + local + facing * (height * halfSide));
+      position += coverage * (inImpostorCentre + local + facing * (impostorHeight(mapped.a) * halfSide));
     }
   }
   float a = sum.a;
@@ -111,8 +107,7 @@ void main() {
     }
 #else
     if (bumpMapped && kind == BILLBOARD_IMPOSTOR) {
-      float height = ((texture(normalMap, st).a * 255.0 - 1.0) / 254.0) * 2.0 - 1.0;
-      position += normalize(inNormal) * height * inTangent.w;
+      position += normalize(inNormal) * impostorHeight(texture(normalMap, st).a) * inTangent.w;
     }
 #endif
     // Seen from behind (a cylindrical quad from above its axis), the back

@@ -20,6 +20,7 @@
 // optics.y: where the anchor sits on the quad's height (0 bottom, 0.5 centre);
 // optics.w = 1: each copy is its outline triangle instead of the quad.
 #extension GL_GOOGLE_include_directive : require
+#include "impostor_atlas.glsl"
 #include "lighting.glsl"
 
 layout(constant_id = SPEC_BILLBOARD_KIND) const int kind = BILLBOARD_CYLINDRICAL;
@@ -133,10 +134,7 @@ void main() {
   }
 #else
   if (kind == BILLBOARD_IMPOSTOR) {
-    // The cell's square of the atlas; textureCoordinate flips v, row 0 on top.
-    int cells = int(draw.optics.z), cell = int(instance.right.w);
-    vec2 origin = vec2(float(cell % cells), float(cell / cells));
-    outUv = vec2((origin.x + corner.x) / float(cells), 1.0 - (origin.y + 1.0 - corner.y) / float(cells));
+    outUv = impostorAtlasCoordinate(int(instance.right.w), int(draw.optics.z), corner);
   }
 #endif
   // w: the handedness (+1), or for an impostor its half size in eye units,
