@@ -141,6 +141,38 @@ TEST_F(ImpostorTest, MeshesTooSmallOrTooLargeKeepTheirMeshChains) {
   EXPECT_EQ(result.stats.impostors, 1u);
 }
 
+// Only a rotation and one positive scale keep their impostor: a mirroring
+// transform would need the atlas's images reversed (and its mesh is wound
+// for the mirror), and the blend turns and scales its quad by one rotation
+// and one scale. The others end their chain in the coarsest mesh.
+TEST_F(ImpostorTest, OnlyTurnedAndEvenlyScaledObjectsGetImpostors) {
+  glm::mat4 turned = rotationY(glm::radians(30.0f));
+  EXPECT_TRUE(impostorTransformUsable(turned));
+  EXPECT_TRUE(impostorTransformUsable(turned * scaling(glm::vec3(2.5f))));
+  EXPECT_FALSE(impostorTransformUsable(turned * scaling(glm::vec3(-1.0f, 1.0f, 1.0f))));
+  EXPECT_FALSE(impostorTransformUsable(turned * scaling(glm::vec3(1.8f, 0.7f, 1.0f))));
+  glm::mat4 sheared(1.0f);
+  sheared[1][0] = 0.5f;
+  EXPECT_FALSE(impostorTransformUsable(sheared));
+  EXPECT_FALSE(impostorTransformUsable(scaling(glm::vec3(0.0f))));
+  EXPECT_FALSE(impostorTransformUsable(scaling(glm::vec3(std::nanf("")))));
+  for (bool blend : {false, true}) {
+    RenderSettings settings = impostorSettings();
+    settings.impostorBlend = blend;
+    const std::pair<glm::mat4, uint32_t> cases[] = {
+        {turned * scaling(glm::vec3(1.2f)), 1u},
+        {scaling(glm::vec3(-1.0f, 1.0f, 1.0f)) * turned, 0u},
+        {turned * scaling(glm::vec3(1.8f, 0.7f, 1.0f)), 0u}};
+    for (const auto& [transform, impostors] : cases) {
+      Scene scene = impostorScene();
+      scene.objects[1].transform = transform;
+      RenderResult result = renderer().renderToImage(scene, settings);
+      EXPECT_EQ(result.stats.impostors, impostors) << "blend " << blend;
+      EXPECT_EQ(result.stats.coarserDraws, 1u) << "blend " << blend;
+    }
+  }
+}
+
 TEST_F(ImpostorTest, TeapotImpostorMatchesGolden) {
   RenderResult result = renderer().renderToImage(impostorScene(), impostorSettings());
   EXPECT_EQ(result.stats.impostors, 1u);

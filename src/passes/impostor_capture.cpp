@@ -257,7 +257,8 @@ void ImpostorCapture::addImpostors(const Scene& source, GpuScene& scene, uint32_
     ImpostorSphere sphere = sphereOf(object.mesh);
     bool eligible = draw.levelCount > 0 && !draw.textured && !draw.transparent && !draw.masked &&
                     !draw.hidden && object.material.reflectivity == 0.0f &&
-                    impostorRadiusUsable(sphere.radius);
+                    impostorRadiusUsable(sphere.radius) &&
+                    impostorTransformUsable(object.transform);
     auto key = std::make_tuple(draw.firstIndex, draw.indexCount, draw.vertexOffset);
     // A scene of many distinct meshes gets atlases for the first ones only.
     eligible = eligible && (atlases.count(key) > 0 || atlases.size() < kMaxImpostorAtlases);

@@ -362,9 +362,7 @@ class NodeWalker {
         Mesh built = gltf::primitiveMesh(model_, source_, meshIndex, int(p),
                                          materials_.needsTangents(materialIndex), texCoordSet);
         if (built.indices.empty()) continue;  // points or lines
-        if (mirrored)
-          for (size_t t = 0; t + 2 < built.indices.size(); t += 3)
-            std::swap(built.indices[t + 1], built.indices[t + 2]);
+        if (mirrored) reverseWinding(built);
         found = meshes_.emplace(key, scene_.addMesh(std::move(built))).first;
       }
       std::string name = mesh.name.empty() ? "mesh " + std::to_string(meshIndex) : mesh.name;

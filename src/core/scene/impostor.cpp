@@ -26,6 +26,19 @@ bool impostorRadiusUsable(float radius) {
   return std::isfinite(radius) && radius > 0.0f;
 }
 
+bool impostorTransformUsable(const glm::mat4& transform) {
+  glm::mat3 linear(transform);
+  float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  if (!(std::isfinite(scale) && scale > 0.0f) || !(glm::determinant(linear) > 0.0f)) return false;
+  constexpr float kTolerance = 1e-4f;
+  for (int i = 0; i < 3; ++i) {
+    if (!(glm::length(linear[i]) >= scale * (1.0f - kTolerance))) return false;
+    if (!(std::abs(glm::dot(linear[i], linear[(i + 1) % 3])) <= kTolerance * scale * scale))
+      return false;
+  }
+  return true;
+}
+
 glm::vec2 octahedralEncode(glm::vec3 direction) {
   float l1 = std::abs(direction.x) + std::abs(direction.y) + std::abs(direction.z);
   if (!(l1 > 0.0f)) return glm::vec2(0.0f);  // no direction (or NaN): the +y cell's corner

@@ -43,6 +43,14 @@ ImpostorSphere impostorSphere(const Mesh& mesh);
 // so a mesh collapsed below about 1e-22 comes out as 0 and one beyond about
 // 1.8e19 as infinite (NaN stays NaN): those keep chains of meshes.
 bool impostorRadiusUsable(float radius);
+// Whether an object placed by `transform` gets an impostor: a rotation and
+// one positive scale (axes of equal length, at right angles, within 1e-4
+// relative). The atlas holds the mesh's own views: a mirroring transform
+// would need them reversed (and the mesh it draws is wound for the mirror,
+// so it would capture inside out), and the blend of cells (impostorBlend)
+// turns and scales its quad by one rotation and one scale. Other objects
+// keep chains of meshes.
+bool impostorTransformUsable(const glm::mat4& transform);
 
 glm::vec2 octahedralEncode(glm::vec3 direction);  // unit direction -> [-1, 1]^2
 glm::vec3 octahedralDecode(glm::vec2 point);      // [-1, 1]^2 -> unit direction

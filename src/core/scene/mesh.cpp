@@ -309,6 +309,11 @@ Bounds computeBounds(const Mesh& mesh) {
   return bounds;
 }
 
+void reverseWinding(Mesh& mesh) {
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+}
+
 void appendMesh(Mesh& mesh, const Mesh& other) {
   if (&mesh == &other) {
     const Mesh copy = other;  // inserting a vector's own range into itself is undefined

@@ -81,6 +81,15 @@ void computeTangents(Mesh& mesh);
 
 Bounds computeBounds(const Mesh& mesh);
 
+// Swaps each triangle's second and third index: counter-clockwise becomes
+// clockwise. An object whose transform mirrors (negative determinant) turns
+// its triangles' winding over, so it draws a mesh reversed this way; then
+// the placed triangles wind counter-clockwise seen from outside, as back-face
+// culling, flat shading's face normals and the ray tracer's expect (the glTF
+// loader, ShapeDesc::mirrored). Normals and tangents stay: the normal matrix
+// and the vertex stage's handedness sign already mirror them.
+void reverseWinding(Mesh& mesh);
+
 // Appends `other` to `mesh` with its indices offset (useful for building scenes).
 void appendMesh(Mesh& mesh, const Mesh& other);
 

@@ -159,6 +159,9 @@ struct Material {
 struct Object {
   std::string name;
   uint32_t mesh = 0;  // index into Scene::meshes
+  // A transform that mirrors (negative determinant) needs a mesh wound for
+  // it (reverseWinding, ShapeDesc::mirrored), as the loaders give it: its
+  // triangles then wind counter-clockwise seen from outside once placed.
   glm::mat4 transform{1.0f};
   Material material;
   bool castsShadows = true;     // drawn into the shadow maps

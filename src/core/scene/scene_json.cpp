@@ -393,7 +393,8 @@ ShapeDesc parseShape(const Field& object, const ShapeSpec& spec) {
 bool sameShape(const ShapeDesc& a, const ShapeDesc& b) {
   return a.kind == b.kind && a.size == b.size && a.halfExtents == b.halfExtents &&
          a.radius == b.radius && a.majorRadius == b.majorRadius && a.minorRadius == b.minorRadius &&
-         a.tessellation == b.tessellation && a.creaseAngleDegrees == b.creaseAngleDegrees;
+         a.tessellation == b.tessellation && a.creaseAngleDegrees == b.creaseAngleDegrees &&
+         a.mirrored == b.mirrored;
 }
 
 // Walks the object tree depth first, keeping the parent's world matrix: the
@@ -447,11 +448,11 @@ class ObjectBuilder {
       ShapeDesc shape = parseShape(field, *spec);
       Material surface =
           material(field, name);  // checked before the (possibly large) mesh is built
-      Object object{name, mesh(shape), world, surface};
+      Object object{name, mesh(shape, world), world, surface};
       if (auto f = field.optional("casts_shadows")) object.castsShadows = f->boolean();
       if (auto f = field.optional("receives_shadows")) object.receivesShadows = f->boolean();
       if (auto f = field.optional("instances"))
-        addCopies(object, parseInstances(*f, world), *f);
+        addCopies(object, shape, parseInstances(*f, world), *f);
       else
         scene_.objects.push_back(object);
     }
@@ -513,7 +514,8 @@ class ObjectBuilder {
   }
 
   // A mesh shape's "instances": one object per copy, in one instance group.
-  void addCopies(Object object, const std::vector<glm::mat4>& copies, const Field& field) {
+  void addCopies(Object object, const ShapeDesc& shape, const std::vector<glm::mat4>& copies,
+                 const Field& field) {
     meshCopies_ += copies.size();
     if (meshCopies_ > MAX_MESH_INSTANCES_PER_SCENE)
       field.fail("the scene's mesh shapes have " + std::to_string(meshCopies_) +
@@ -525,11 +527,14 @@ class ObjectBuilder {
     for (size_t i = 0; i < copies.size(); ++i) {
       object.name = name + "[" + std::to_string(i) + "]";
       object.transform = copies[i];
+      object.mesh = mesh(shape, copies[i]);  // a mirroring copy: the mesh wound for it
       scene_.objects.push_back(object);
     }
   }
 
-  uint32_t mesh(const ShapeDesc& shape) {
+  // The mesh of `shape` placed by `world`: wound for it if it mirrors.
+  uint32_t mesh(ShapeDesc shape, const glm::mat4& world) {
+    shape.mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
     for (uint32_t i = 0; i < scene_.shapes.size(); ++i)
       if (sameShape(scene_.shapes[i], shape)) return i;
     scene_.meshes.emplace_back();

@@ -69,6 +69,7 @@ ShapeDesc scaledShape(const ShapeDesc& shape, float scale) {
 Mesh buildShape(const ShapeDesc& shape, float scale) {
   Mesh mesh = buildExactShape(scaledShape(shape, scale));
   if (shape.creaseAngleDegrees >= 0.0f) computeCreaseNormals(mesh, shape.creaseAngleDegrees);
+  if (shape.mirrored) reverseWinding(mesh);
   return mesh;
 }
 

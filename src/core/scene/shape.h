@@ -25,6 +25,9 @@ struct ShapeDesc {
   // area-weighted averages, split wherever faces meet at more than this angle
   // (0 facets everything, 180 smooths everything, a box's edges are 90).
   float creaseAngleDegrees = -1.0f;
+  // For an object whose transform mirrors (negative determinant): the mesh's
+  // winding reversed (reverseWinding, core/scene/mesh.h) after it is built.
+  bool mirrored = false;
 };
 
 // Builds the mesh at `scale` times the base tessellation (segments per side

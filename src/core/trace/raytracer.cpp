@@ -108,6 +108,9 @@ struct RayTracer::TracedObject {
   glm::vec3 halfExtents{0.5f};  // box
   const Mesh* mesh = nullptr;   // mesh
   const Bvh* bvh = nullptr;     // mesh
+  // A mirroring transform's mesh is wound the other way (Object::transform):
+  // its triangles' cross products point inwards in object space.
+  bool mirrored = false;
   glm::mat4 worldToObject{1.0f};
   glm::mat3 normalToWorld{1.0f};  // inverse transpose of the transform's 3x3
   Bounds worldBounds;
@@ -177,6 +180,7 @@ bool RayTracer::TracedObject::intersect(const Ray& local, float tMin, float tMax
       hit.uv = w * a.uv + triangle.u * b.uv + triangle.v * c.uv;
       hit.triangle = triangle.triangle;
       geometric = glm::cross(b.position - a.position, c.position - a.position);
+      if (mirrored) geometric = -geometric;
       return true;
     }
   }
@@ -212,7 +216,10 @@ void RayTracer::TracedObject::forEachCrossingNormal(
       crossings = boxCrossings(local, halfExtents);
       break;
     case Surface::Mesh:
-      bvh->forEachHitNormal(local, 0.0f, tMax, visit);
+      if (mirrored)
+        bvh->forEachHitNormal(local, 0.0f, tMax, [&](glm::vec3 normal) { visit(-normal); });
+      else
+        bvh->forEachHitNormal(local, 0.0f, tMax, visit);
       return;
   }
   for (int i = 0; i < crossings.count; ++i) {
@@ -266,6 +273,7 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.halfExtents = shape.halfExtents;
     traced.mesh = meshSource[object.mesh];
     traced.bvh = meshBvh[object.mesh];
+    traced.mirrored = determinant < 0.0f;
     traced.worldToObject = glm::inverse(object.transform);
     traced.normalToWorld = glm::transpose(glm::inverse(glm::mat3(object.transform)));
     traced.transparency = object.material.transparency;
