@@ -448,13 +448,15 @@ class ObjectBuilder {
       ShapeDesc shape = parseShape(field, *spec);
       Material surface =
           material(field, name);  // checked before the (possibly large) mesh is built
-      Object object{name, mesh(shape, world), world, surface};
+      Object object{name, 0, world, surface};
       if (auto f = field.optional("casts_shadows")) object.castsShadows = f->boolean();
       if (auto f = field.optional("receives_shadows")) object.receivesShadows = f->boolean();
-      if (auto f = field.optional("instances"))
+      if (auto f = field.optional("instances")) {
         addCopies(object, shape, parseInstances(*f, world), *f);
-      else
+      } else {
+        object.mesh = mesh(shape, world);
         scene_.objects.push_back(object);
+      }
     }
 
     std::optional<Field> children = field.optional("children");
@@ -524,10 +526,15 @@ class ObjectBuilder {
                      " per scene (MAX_MESH_INSTANCES_PER_SCENE)");
     object.instanceGroup = uint32_t(scene_.objects.size());
     std::string name = object.name;
+    // The shape's mesh, and the one wound for a mirroring copy: each looked
+    // up once, not once per copy (up to 65,536).
+    std::optional<uint32_t> meshes[2];
     for (size_t i = 0; i < copies.size(); ++i) {
       object.name = name + "[" + std::to_string(i) + "]";
       object.transform = copies[i];
-      object.mesh = mesh(shape, copies[i]);  // a mirroring copy: the mesh wound for it
+      std::optional<uint32_t>& found = meshes[glm::determinant(glm::mat3(copies[i])) < 0.0f];
+      if (!found) found = mesh(shape, copies[i]);
+      object.mesh = *found;
       scene_.objects.push_back(object);
     }
   }
