@@ -88,6 +88,19 @@ float radians(float degrees) {
 
 const float kAngles[] = {-2.5f, -0.4f, 0.0f, 0.3f, 1.0f, kPi / 2, 2.8f};
 
+// An odd number of negative scale factors mirrors, whatever the rotation;
+// the sign survives scales whose float determinant would be 0 or infinite.
+TEST(Mirrors, OddNumberOfNegativeScalesMirrors) {
+  glm::mat4 turned = rotationAxis(glm::vec3(1.0f, 2.0f, 3.0f), 0.7f);
+  EXPECT_FALSE(mirrors(turned));
+  EXPECT_TRUE(mirrors(turned * scaling(glm::vec3(-1.0f, 1.0f, 1.0f))));
+  EXPECT_FALSE(mirrors(scaling(glm::vec3(-1.0f, -1.0f, 1.0f)) * turned));
+  EXPECT_TRUE(mirrors(scaling(glm::vec3(-2.0f, -3.0f, -0.5f))));
+  EXPECT_TRUE(mirrors(scaling(glm::vec3(-1e-20f, 1e-20f, 1e-20f))));
+  EXPECT_TRUE(mirrors(scaling(glm::vec3(1e20f, -1e20f, 1e20f))));
+  EXPECT_FALSE(mirrors(scaling(glm::vec3(0.0f, -1.0f, 1.0f))));  // collapsed, not mirrored
+}
+
 TEST(Translation, OffsetIsInTheLastColumn) {
   const glm::mat4 m = translation({2.0f, -3.0f, 4.0f});
   EXPECT_TRUE(matricesNear(m, rows({1, 0, 0, 2}, {0, 1, 0, -3}, {0, 0, 1, 4}, {0, 0, 0, 1})));

@@ -342,7 +342,7 @@ class NodeWalker {
     const tinygltf::Mesh& mesh = model_.meshes[size_t(meshIndex)];
     // A mirroring transform turns counter-clockwise triangles clockwise; the
     // spec asks for the winding to be flipped so back-face culling still works.
-    bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    bool mirrored = mirrors(world);
     size_t before = scene_.objects.size();
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       int materialIndex = mesh.primitives[p].material;

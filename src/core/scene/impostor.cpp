@@ -5,6 +5,8 @@
 #include <map>
 #include <mutex>
 
+#include "core/scene/transform.h"
+
 namespace shadelab {
 namespace {
 
@@ -29,7 +31,7 @@ bool impostorRadiusUsable(float radius) {
 bool impostorTransformUsable(const glm::mat4& transform) {
   glm::mat3 linear(transform);
   float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
-  if (!(std::isfinite(scale) && scale > 0.0f) || !(glm::determinant(linear) > 0.0f)) return false;
+  if (!(std::isfinite(scale) && scale > 0.0f) || mirrors(transform)) return false;
   constexpr float kTolerance = 1e-4f;
   for (int i = 0; i < 3; ++i) {
     if (!(glm::length(linear[i]) >= scale * (1.0f - kTolerance))) return false;

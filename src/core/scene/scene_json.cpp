@@ -532,7 +532,7 @@ class ObjectBuilder {
     for (size_t i = 0; i < copies.size(); ++i) {
       object.name = name + "[" + std::to_string(i) + "]";
       object.transform = copies[i];
-      std::optional<uint32_t>& found = meshes[glm::determinant(glm::mat3(copies[i])) < 0.0f];
+      std::optional<uint32_t>& found = meshes[mirrors(copies[i])];
       if (!found) found = mesh(shape, copies[i]);
       object.mesh = *found;
       scene_.objects.push_back(object);
@@ -541,7 +541,7 @@ class ObjectBuilder {
 
   // The mesh of `shape` placed by `world`: wound for it if it mirrors.
   uint32_t mesh(ShapeDesc shape, const glm::mat4& world) {
-    shape.mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+    shape.mirrored = mirrors(world);
     for (uint32_t i = 0; i < scene_.shapes.size(); ++i)
       if (sameShape(scene_.shapes[i], shape)) return i;
     scene_.meshes.emplace_back();

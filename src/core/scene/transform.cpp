@@ -197,4 +197,8 @@ glm::mat3 normalMatrix(const glm::mat4& modelView) {
   return glm::mat3(bc / det, glm::cross(c, a) / det, glm::cross(a, b) / det);
 }
 
+bool mirrors(const glm::mat4& transform) {
+  return glm::determinant(glm::dmat3(glm::mat3(transform))) < 0.0;
+}
+
 }  // namespace shadelab

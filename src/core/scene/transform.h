@@ -30,6 +30,12 @@ struct Shear {
 };
 glm::mat4 shearing(const Shear& s);
 
+// Whether `transform` mirrors: its 3x3 part's determinant is negative (a
+// scale of -1 along one axis, or three). Worked in double, so scales far
+// from 1 (1e-20 or 1e20 per axis) keep the sign a float product would lose.
+// A mirroring object draws a mesh wound for it (reverseWinding, mesh.h).
+bool mirrors(const glm::mat4& transform);
+
 // Inverses written from the formulas: T(d)^-1 = T(-d), R^-1 = R^T, S(s)^-1 = S(1/s).
 glm::mat4 translationInverse(glm::vec3 offset);
 // Transpose of the upper 3x3; any translation in `rotation` is ignored.

@@ -11,6 +11,7 @@
 
 #include "core/base/errors.h"
 #include "core/scene/lighting.h"
+#include "core/scene/transform.h"
 #include "core/scene/uv_mapping.h"
 #include "core/trace/optics.h"
 #include "core/trace/trace_material.h"
@@ -273,7 +274,7 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.halfExtents = shape.halfExtents;
     traced.mesh = meshSource[object.mesh];
     traced.bvh = meshBvh[object.mesh];
-    traced.mirrored = determinant < 0.0f;
+    traced.mirrored = mirrors(object.transform);
     traced.worldToObject = glm::inverse(object.transform);
     traced.normalToWorld = glm::transpose(glm::inverse(glm::mat3(object.transform)));
     traced.transparency = object.material.transparency;
