@@ -5,9 +5,10 @@
 // normals all still see the outside. The check is a symmetry: a scene that
 // is its own mirror image across x = 0 except for one teapot, drawn once as
 // it is and once inside a group scaled by -1 in x, must give the image
-// flipped left to right, in every model and in the ray tracer. Each has a
-// must-fail twin: the mirrored teapot with its winding turned back, as it
-// was drawn before (inside out, dark), which the comparison must reject.
+// flipped left to right, in every model (with its shadow) and in the ray
+// tracer. Each has a must-fail twin: the mirrored teapot with its winding
+// turned back, as it was drawn before (inside out, dark), which the
+// comparison must reject.
 // (Before, the rasteriser drew mirrored shapes inside out and the tracer
 // mirrored glTF meshes, whose loader already wound them for the mirror.)
 #include <string>
@@ -38,7 +39,7 @@ Scene teapotScene(bool mirrored) {
     "camera": {"eye": [0, 3, 7], "at": [0, 0.8, 0], "fovy": 45},
     "ambient": 0.3, "background": [0.6, 0.7, 0.9],
     "lights": [{"type": "directional", "direction": [0, -1, -0.6], "intensity": 0.9,
-                "shadows": false}],
+                "shadows": true}],
     "objects": [{"name": "ground", "shape": "plane", "size": 20,
                  "material": {"kd": [0.5, 0.6, 0.4], "ks": 0}}, )" +
                             teapot + "]}",
@@ -77,6 +78,7 @@ TEST_F(Mirrored, MirroredMeshDrawsTheMirrorImageInEveryModel) {
   for (ShadingModel model : {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong}) {
     SCOPED_TRACE(shadingModelName(model));
     RenderSettings settings{kWidth, kHeight, model};
+    settings.shadows = ShadowMethod::Hard;  // the teapot's shadow mirrors with it
     ImageU8 expected = flippedLeftToRight(
         encodeSrgb8(renderer().renderToImage(teapotScene(false), settings).image));
     EXPECT_TRUE(matchesImage(expected,
