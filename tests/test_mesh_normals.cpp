@@ -21,7 +21,9 @@ bool nearlyEqual(glm::vec3 a, glm::vec3 b, float tolerance = kTolerance) {
 }
 
 std::string describe(glm::vec3 v) {
-  return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+  std::string text = "(";  // not "(" + std::string: GCC 12's false -Wrestrict
+  text += std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+  return text;
 }
 
 glm::vec3 faceNormal(const Mesh& mesh, std::size_t triangle) {

@@ -85,8 +85,12 @@ std::string cameraOptionLine(const Camera& camera) {
 }
 
 std::string cameraJson(const Camera& camera) {
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on
+  // "[" + std::string.
   auto array = [](const glm::vec3& v) {
-    return "[" + roundTrip(v.x) + ", " + roundTrip(v.y) + ", " + roundTrip(v.z) + "]";
+    std::string text = "[";
+    text += roundTrip(v.x) + ", " + roundTrip(v.y) + ", " + roundTrip(v.z) + "]";
+    return text;
   };
   std::string json = "{\"eye\": " + array(camera.eye) + ", \"at\": " + array(camera.at) +
                      ", \"up\": " + array(camera.up) + ", \"projection\": \"" +
