@@ -1,10 +1,11 @@
 #include "core/base/image.h"
 
-#include <unistd.h>
+#include <stdlib.h>  // mkdtemp
 
 #include <algorithm>
 #include <bit>
 #include <cassert>
+#include <cerrno>
 #include <cmath>
 #include <glm/gtc/packing.hpp>
 #include <limits>
@@ -244,28 +245,33 @@ void writeAnimatedGif(const std::vector<ImageU8>& frames, const fs::path& path,
   // a private temporary, read back whole (every frame decodes) before its
   // bytes go through the one atomic writer, since giflib does not report a
   // write that failed (a full disk gave a truncated file and success).
-  fs::path scratch = fs::temp_directory_path() /
-                     ("shadelab-" + std::to_string(::getpid()) + "-" + path.filename().string());
+  // The temporary lives in a folder of its own that mkdtemp made (a name no
+  // one could predict, mode 0700): a fixed name in the shared /tmp could be
+  // planted as a symbolic link to a file of the user's, which giflib would
+  // then overwrite.
+  std::string folder = (fs::temp_directory_path() / "shadelab-gif-XXXXXX").string();
+  if (!::mkdtemp(folder.data()))
+    throw InputError("cannot write '" + path.string() + "': no temporary folder for the encoder (" +
+                     folder + ": " + std::generic_category().message(errno) + ")");
+  struct RemovedAtExit {
+    fs::path folder;
+    ~RemovedAtExit() {
+      std::error_code ignored;
+      fs::remove_all(folder, ignored);
+    }
+  } scratchFolder{folder};
+  fs::path scratch = scratchFolder.folder / "frames.gif";
   std::string error;
-  std::error_code ignored;
   if (!module.writeGif(scratch.string(), int(frames[0].width), int(frames[0].height), pixels,
-                       framesPerSecond, error)) {
-    fs::remove(scratch, ignored);
+                       framesPerSecond, error))
     throw InputError("cannot encode '" + path.string() + "': " + error);
-  }
-  std::string bytes;
-  try {
-    bytes = readInputFile(scratch, "encoded GIF", kMaxBinaryInputBytes);
-    std::unique_ptr<oiio::ImageFile> last = module.openImage(scratch.string());
-    if (!last->read(int(frames.size()) - 1, oiio::PixelType::UInt8, error))
-      throw InputError("cannot write '" + path.string() + "': the encoded GIF (" +
-                       std::to_string(bytes.size()) + " bytes) does not hold all " +
-                       std::to_string(frames.size()) + " frames (disk full or a file size limit?)");
-  } catch (...) {
-    fs::remove(scratch, ignored);
-    throw;
-  }
-  fs::remove(scratch, ignored);
+  std::string bytes = readInputFile(scratch, "encoded GIF", kMaxBinaryInputBytes);
+  std::unique_ptr<oiio::ImageFile> last = module.openImage(scratch.string());
+  if (!last->read(int(frames.size()) - 1, oiio::PixelType::UInt8, error))
+    throw InputError("cannot write '" + path.string() + "': the encoded GIF (" +
+                     std::to_string(bytes.size()) + " bytes) does not hold all " +
+                     std::to_string(frames.size()) + " frames (disk full or a file size limit?)");
+  last.reset();
   writeFileAtomically(path, bytes);
 }
 
