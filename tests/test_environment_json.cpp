@@ -11,20 +11,13 @@
 #include "core/base/errors.h"
 #include "core/base/image.h"
 #include "core/scene/scene_json.h"
+#include "test_folder.h"
 
 namespace shadelab {
 namespace {
 namespace fs = std::filesystem;
+using test::testFolder;
 using testing::HasSubstr;
-
-// A folder of its own per test, holding a scene file's images.
-fs::path testFolder() {
-  fs::path dir = fs::path(testing::TempDir()) / "shadelab-environment" /
-                 testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 void writeSolidPng(const fs::path& path, uint32_t width, uint32_t height, glm::u8vec4 value) {
   ImageU8 image(width, height);

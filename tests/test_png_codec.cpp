@@ -19,18 +19,13 @@
 #include "core/base/image_reader.h"
 #include "core/base/oiio_module.h"
 #include "core/base/png_codec.h"
+#include "test_folder.h"
 
 namespace fs = std::filesystem;
 using shadelab::ImageReader;
 using shadelab::oiio::PixelType;
 
 namespace {
-
-fs::path tempDir() {
-  fs::path dir = fs::temp_directory_path() / ("shadelab-png-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 // A PNG written by libpng directly, so the test chooses every field.
 struct PngKind {
@@ -139,7 +134,7 @@ const std::vector<PngKind>& kinds() {
 
 // Every kind decodes to OpenImageIO's values, as bytes and as floats.
 TEST(PngCodec, DecodesAsOpenImageIoDid) {
-  fs::path dir = tempDir();
+  fs::path dir = shadelab::test::testFolder();
   for (const PngKind& kind : kinds()) {
     SCOPED_TRACE(kind.name);
     fs::path path = dir / (kind.name + ".png");
@@ -182,7 +177,7 @@ TEST(PngCodec, EncodesAsOpenImageIoDoesAtLevelOne) {
 
 // A PNG that is not one: the message names the file and libpng's reason.
 TEST(PngCodec, TruncatedFileIsAnInputError) {
-  fs::path dir = tempDir();
+  fs::path dir = shadelab::test::testFolder();
   std::vector<uint8_t> pixels(8 * 8 * 4, 200);
   std::string bytes = shadelab::encodePngRgba8(8, 8, pixels.data(), "t.png");
   shadelab::writeFileAtomically(dir / "t.png", std::string_view(bytes).substr(0, 60));
@@ -203,7 +198,7 @@ TEST(PngWithoutModule, PngReadAndWriteLeaveTheModuleUnloaded) {
   if (shadelab::oiio::oiioModuleLoaded())
     GTEST_SKIP()
         << "an earlier test in this process loaded the module; ctest runs this suite alone";
-  fs::path dir = tempDir();
+  fs::path dir = shadelab::test::testFolder();
   shadelab::ImageU8 image(5, 3);
   image.set(1, 1, {10, 20, 30, 255});
   shadelab::writeImage(image, dir / "a.png");

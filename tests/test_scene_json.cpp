@@ -18,6 +18,7 @@
 #include "core/scene/scene_json.h"
 #include "core/scene/scene_loader.h"
 #include "core/scene/transform.h"
+#include "test_folder.h"
 
 namespace shadelab {
 namespace {
@@ -552,8 +553,7 @@ TEST(SceneJson, TriangleBudgetIsCheckedBeforeMeshesAreBuilt) {
   }
 }
 
-std::filesystem::path writeTempFile(const std::string& name, const std::string& contents) {
-  std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;
+std::filesystem::path writeFile(const std::filesystem::path& path, const std::string& contents) {
   std::ofstream(path) << contents;
   return path;
 }
@@ -563,20 +563,20 @@ std::string loadError(const std::filesystem::path& path) {
 }
 
 TEST(SceneJsonFile, LoadsThroughLoadSceneAndReportsBadFiles) {
-  std::filesystem::path good = writeTempFile("shadelab-good.json", R"({"objects": []})");
+  std::filesystem::path folder = test::testFolder();
+  std::filesystem::path good = writeFile(folder / "shadelab-good.json", R"({"objects": []})");
   EXPECT_EQ(loadScene(good.string()).name, "shadelab-good");
-  std::filesystem::path bad = writeTempFile("shadelab-bad.json", R"({"objects": [{}]})");
+  std::filesystem::path bad = writeFile(folder / "shadelab-bad.json", R"({"objects": [{}]})");
   EXPECT_THAT(loadError(bad), HasSubstr(bad.string() + ": objects[0]: a group"));
-  std::filesystem::path missing = std::filesystem::path(testing::TempDir()) / "no-such.json";
+  std::filesystem::path missing = folder / "no-such.json";
   EXPECT_THAT(loadError(missing),
               HasSubstr("scene file '" + missing.string() + "' does not exist"));
   EXPECT_THAT(errorFrom([&] { loadSceneJson(missing); }),
               HasSubstr("scene file '" + missing.string() + "' does not exist"));
-  EXPECT_THAT(loadError(std::filesystem::path(testing::TempDir())),
-              HasSubstr("is a directory, expected a .json, .gltf or .glb file"));
-  std::filesystem::path emptyModel = writeTempFile("shadelab-model.gltf", "{}");
+  EXPECT_THAT(loadError(folder), HasSubstr("is a directory, expected a .json, .gltf or .glb file"));
+  std::filesystem::path emptyModel = writeFile(folder / "shadelab-model.gltf", "{}");
   EXPECT_THAT(loadError(emptyModel), HasSubstr(emptyModel.string() + ": invalid glTF"));
-  std::filesystem::path directory = std::filesystem::path(testing::TempDir()) / "dir.json";
+  std::filesystem::path directory = folder / "dir.json";
   std::filesystem::create_directories(directory);
   EXPECT_THAT(loadError(directory), HasSubstr("is a directory"));
 }

@@ -14,6 +14,7 @@
 #include "core/scene/texture.h"
 #include "core/scene/uv_mapping.h"
 #include "core/trace/trace_textures.h"
+#include "test_folder.h"
 
 namespace shadelab {
 namespace {
@@ -36,12 +37,6 @@ TEST(MipChain, SizesHalveRoundingDownAndStopAtOne) {
     EXPECT_EQ(mipLevelSize(37, 23, level), expected[level]) << "level " << level;
 }
 
-fs::path tempDir() {
-  fs::path dir = fs::temp_directory_path() / ("shadelab-textures-" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
 // Writes pixels with OpenImageIO directly, so the channel count and type are the test's.
 template <typename T>
 void writeRaw(const fs::path& path, int width, int height, int channels, OIIO::TypeDesc type,
@@ -54,7 +49,7 @@ void writeRaw(const fs::path& path, int width, int height, int channels, OIIO::T
 }
 
 TEST(TextureFile, EightBitPngKeepsItsValuesForColourAndData) {
-  fs::path path = tempDir() / "rgb.png";
+  fs::path path = test::testFolder() / "rgb.png";
   writeRaw<uint8_t>(path, 2, 1, 3, OIIO::TypeDesc::UINT8, {10, 20, 30, 200, 100, 0});
   Texture color = loadTextureFile(path, TextureRole::Color);
   Texture data = loadTextureFile(path, TextureRole::Data);
@@ -68,14 +63,14 @@ TEST(TextureFile, EightBitPngKeepsItsValuesForColourAndData) {
 }
 
 TEST(TextureFile, GreyReplicatesIntoRgb) {
-  fs::path path = tempDir() / "grey.png";
+  fs::path path = test::testFolder() / "grey.png";
   writeRaw<uint8_t>(path, 1, 1, 1, OIIO::TypeDesc::UINT8, {77});
   EXPECT_EQ(loadTextureFile(path, TextureRole::Data).rgba8,
             (std::vector<uint8_t>{77, 77, 77, 255}));
 }
 
 TEST(TextureFile, FloatExrIsLinearLightEncodedToSrgbForColourOnly) {
-  fs::path path = tempDir() / "half.exr";
+  fs::path path = test::testFolder() / "half.exr";
   writeRaw<float>(path, 1, 1, 4, OIIO::TypeDesc::FLOAT, {0.5f, 0.2159f, 2.0f, 0.25f});
   Texture color = loadTextureFile(path, TextureRole::Color);
   Texture data = loadTextureFile(path, TextureRole::Data);
@@ -85,14 +80,15 @@ TEST(TextureFile, FloatExrIsLinearLightEncodedToSrgbForColourOnly) {
 }
 
 TEST(TextureFile, MissingAndUnreadableFilesNameTheFile) {
-  fs::path missing = tempDir() / "nothing.png";
+  fs::path folder = test::testFolder();
+  fs::path missing = folder / "nothing.png";
   try {
     loadTextureFile(missing, TextureRole::Color);
     FAIL() << "no InputError";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find(missing.string()), std::string::npos) << error.what();
   }
-  fs::path garbage = tempDir() / "garbage.png";
+  fs::path garbage = folder / "garbage.png";
   std::ofstream(garbage) << "not an image";
   EXPECT_THROW(loadTextureFile(garbage, TextureRole::Color), InputError);
 }
