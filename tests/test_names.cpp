@@ -69,5 +69,17 @@ TEST(NameTable, ShadingModelsAreInTheShadersOrder) {
   for (int i = 0; i < kShadingModelCount; ++i) EXPECT_EQ(int(kShadingModelNames[i].value), i);
 }
 
+TEST(SplitFields, KeepsEmptyFieldsAndInvertsJoin) {
+  using Fields = std::vector<std::string>;
+  EXPECT_EQ(splitFields(""), Fields{});
+  EXPECT_EQ(splitFields("a"), Fields{"a"});
+  EXPECT_EQ(splitFields("a,,b,"), (Fields{"a", "", "b", ""}));
+  EXPECT_EQ(splitFields(",a"), (Fields{"", "a"}));
+  EXPECT_EQ(splitFields(" a ; b", ';'), (Fields{" a ", " b"}));
+  EXPECT_EQ(joinNames({"x", "y", "z"}, ","), "x,y,z");
+  Fields fields = splitFields(joinNames({"x", "", "z"}, ","));
+  EXPECT_EQ(fields, (Fields{"x", "", "z"}));
+}
+
 }  // namespace
 }  // namespace shadelab

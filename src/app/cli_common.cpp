@@ -8,6 +8,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
+#include "core/base/names.h"
 
 namespace shadelab {
 namespace {
@@ -57,22 +58,18 @@ Size parseSize(const std::string& text, const std::string& option) {
 }
 
 std::vector<std::string> splitList(const std::string& text, const std::string& option) {
-  std::vector<std::string> items;
-  size_t start = 0;
-  while (true) {
-    size_t comma = text.find(',', start);
-    items.push_back(
-        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (items.back().empty())
-      throw InputError(option + " '" + text + "': entry " + std::to_string(items.size()) +
+  std::vector<std::string> items = splitFields(text);
+  if (items.empty()) items.emplace_back();
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items[i].empty())
+      throw InputError(option + " '" + text + "': entry " + std::to_string(i + 1) +
                        " is empty; expected a comma-separated list");
-    for (size_t j = 0; j + 1 < items.size(); ++j)
-      if (items[j] == items.back())
-        throw InputError(option + " '" + text + "': '" + items.back() +
+    for (size_t j = 0; j < i; ++j)
+      if (items[j] == items[i])
+        throw InputError(option + " '" + text + "': '" + items[i] +
                          "' is listed twice; list each once");
-    if (comma == std::string::npos) return items;
-    start = comma + 1;
   }
+  return items;
 }
 
 std::vector<double> parseNumberList(const std::string& text, const std::string& option, double min,

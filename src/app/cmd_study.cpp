@@ -12,6 +12,7 @@
 #include "app/progress.h"
 #include "core/base/errors.h"
 #include "core/base/files.h"
+#include "core/base/names.h"
 #include "measure/study.h"
 
 namespace shadelab {
@@ -40,21 +41,14 @@ int listStudies(const JsonOutput& json) {
 // A study's CSV (its measurements, one row per line, a header, no quoted
 // fields) as rows of objects keyed by the header: numbers as numbers.
 nlohmann::json csvRows(const std::filesystem::path& path) {
-  auto split = [](const std::string& line) {
-    std::vector<std::string> cells;
-    std::stringstream stream(line);
-    std::string cell;
-    while (std::getline(stream, cell, ',')) cells.push_back(cell);
-    return cells;
-  };
   std::stringstream text(readInputFile(path, "study output", kMaxTextInputBytes));
   std::string line;
   std::getline(text, line);
-  std::vector<std::string> header = split(line);
+  std::vector<std::string> header = splitFields(line);
   nlohmann::json rows = nlohmann::json::array();
   while (std::getline(text, line)) {
     if (line.empty()) continue;
-    std::vector<std::string> cells = split(line);
+    std::vector<std::string> cells = splitFields(line);
     nlohmann::json row = nlohmann::json::object();
     for (size_t i = 0; i < header.size() && i < cells.size(); ++i) {
       char* end = nullptr;

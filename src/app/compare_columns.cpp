@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <set>
-#include <sstream>
 
 #include "core/base/errors.h"
+#include "core/base/names.h"
 #include "core/scene/texture.h"
 #include "core/vulkan/depth.h"
 
@@ -14,14 +14,6 @@ namespace {
 
 const char* const kKeys =
     "name, mode, tess, msaa, filter, env, bump, depth, shadows, shadow-size, lod";
-
-std::vector<std::string> splitOn(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  for (std::string part; std::getline(stream, part, separator);) parts.push_back(part);
-  if (!text.empty() && text.back() == separator) parts.push_back("");
-  return parts;
-}
 
 // Parses one spec; `fail(what)` throws InputError "--column 'SPEC': WHAT".
 class SpecReader {
@@ -34,7 +26,7 @@ class SpecReader {
   CompareColumn read() {
     if (spec_.empty())
       fail("empty: expected a model or key=value pairs (" + std::string(kKeys) + ")");
-    for (const std::string& item : splitOn(spec_, ',')) {
+    for (const std::string& item : splitFields(spec_)) {
       size_t equals = item.find('=');
       if (equals == std::string::npos) {
         // A bare word: the shading model (what --modes lists).

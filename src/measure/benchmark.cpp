@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "core/base/errors.h"
+#include "core/base/names.h"
 #include "core/base/process_memory.h"
 #include "core/base/stats.h"
 #include "core/metrics/metrics.h"
@@ -242,23 +243,15 @@ size_t BenchTable::column(const std::string& name, const std::string& source) co
 }
 
 BenchTable parseBenchCsv(const std::string& text, const std::string& source) {
-  auto split = [](const std::string& line) {
-    std::vector<std::string> cells;
-    std::stringstream stream(line);
-    std::string cell;
-    while (std::getline(stream, cell, ',')) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.emplace_back();
-    return cells;
-  };
   BenchTable table;
   std::stringstream lines(text);
   std::string line;
   if (!std::getline(lines, line) || line.empty())
     throw InputError("'" + source + "': empty, expected bench results with a header line");
-  table.columns = split(line);
+  table.columns = splitFields(line);
   for (size_t number = 2; std::getline(lines, line); ++number) {
     if (line.empty()) continue;
-    table.rows.push_back(split(line));
+    table.rows.push_back(splitFields(line));
     if (table.rows.back().size() != table.columns.size())
       throw InputError("'" + source + "' line " + std::to_string(number) + ": " +
                        std::to_string(table.rows.back().size()) + " values, expected " +

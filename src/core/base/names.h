@@ -56,6 +56,11 @@ std::vector<std::string_view> namesOf(const NameTable<E, N>& table) {
 std::string joinNames(const std::vector<std::string_view>& names,
                       std::string_view separator = ", ");
 
+// The fields of `text` between separators, as typed (no trimming, no
+// quoting): "a,,b," -> {"a", "", "b", ""}; "" -> {}. For the command line's
+// comma lists and the CSV files shadelab writes itself.
+std::vector<std::string> splitFields(std::string_view text, char separator = ',');
+
 // The value named `text`, or InputError "WHAT 'TEXT': expected one of a, b, c".
 template <typename E, size_t N>
 E parseNamed(const NameTable<E, N>& table, std::string_view text, std::string_view what) {
