@@ -150,6 +150,41 @@ TEST(RayTracer, GlassCastsALighterShadowThanAnOpaqueBall) {
   EXPECT_EQ(RayTracer(scene).transmittance(throughBall, 3.5f), 1.0f);  // ends before the ball
 }
 
+// The scene's shadow switches hold for the tracer as for the shadow maps: a
+// light with "shadows": false, an object that casts none and one that
+// receives none each leave the floor under a box lit. Without them it is
+// in the box's shadow (ambient only), which is what each case must differ from.
+TEST(RayTracer, ShadowSwitchesOfLightsAndObjectsAreObeyed) {
+  ShapeDesc floor{ShapeKind::Plane};
+  floor.size = 10.0f;
+  Scene scene = oneObject(floor, glm::mat4(1.0f));
+  scene.objects[0].material = {{0.2f, 0.2f, 0.2f}, {0.8f, 0.8f, 0.8f}, {0, 0, 0}, 1.0f};
+  ShapeDesc box{ShapeKind::Box};
+  box.halfExtents = glm::vec3(0.5f);
+  scene.objects.push_back(
+      {"box", scene.addShape(box), translation({0, 2, 0}), scene.objects[0].material});
+  scene.ambient = glm::vec3(0.5f);
+  scene.lights = {{LightType::Directional, {}, {0, -1, 0}, glm::vec3(1.0f), {1, 0, 0}}};
+  const Ray down{{0.1f, 1.0f, 0.2f}, {0, -1, 0}};  // between box and floor, under the box
+  auto shade = [&](const Scene& variant) {
+    RayTracer tracer(variant);
+    TraceStats stats;
+    return tracer.traceRay(down, kInf, glm::vec3(0, 5, 0), 0, 1.0f, TraceSettings{}, stats).g;
+  };
+  const float shadowed = shade(scene);
+  EXPECT_NEAR(shadowed, 0.5f * 0.2f, 1e-5f);  // Ia ka only
+  const float lit = 0.5f * 0.2f + 0.8f;       // + Ip kd N.L
+  Scene noLightShadows = scene;
+  noLightShadows.lights[0].shadows = false;
+  EXPECT_NEAR(shade(noLightShadows), lit, 1e-5f);
+  Scene boxCastsNone = scene;
+  boxCastsNone.objects[1].castsShadows = false;
+  EXPECT_NEAR(shade(boxCastsNone), lit, 1e-5f);
+  Scene floorReceivesNone = scene;
+  floorReceivesNone.objects[0].receivesShadows = false;
+  EXPECT_NEAR(shade(floorReceivesNone), lit, 1e-5f);
+}
+
 TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
   ShapeDesc sphere{ShapeKind::Icosphere};
   sphere.radius = 1.0f;

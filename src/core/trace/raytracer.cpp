@@ -117,6 +117,7 @@ struct RayTracer::TracedObject {
   Bounds worldBounds;
   float transparency = 0.0f;
   float ior = 1.5f;
+  bool castsShadows = true;  // Object::castsShadows: shadow rays pass through it when false
   uint32_t sceneObject = 0;  // index into Scene::objects
   UvProjection projection = UvProjection::Mesh;
   Bounds uvBounds;  // the scene mesh's box, which S-mappings are fitted to (as at upload)
@@ -279,6 +280,7 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.normalToWorld = glm::transpose(glm::inverse(glm::mat3(object.transform)));
     traced.transparency = object.material.transparency;
     traced.ior = object.material.ior;
+    traced.castsShadows = object.castsShadows;
     traced.projection = object.material.uvProjection;
     if (traced.projection != UvProjection::Mesh)
       traced.uvBounds = computeBounds(scene.meshes[object.mesh]);
@@ -354,6 +356,7 @@ float RayTracer::transmittance(const Ray& ray, float tMax, bool fresnel) const {
   const glm::vec3 unit = glm::normalize(ray.direction);
   float passed = 1.0f;
   for (const TracedObject& object : objects_) {
+    if (!object.castsShadows) continue;
     float tEntry;
     if (!intersectBounds(object.worldBounds, ray, inverse, 0.0f, tMax, tEntry)) continue;
     const Ray local = object.toLocal(ray);
@@ -405,7 +408,9 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
     // The equation adds nothing where N.L <= 0: no shadow ray needed there.
     if (!(glm::dot(toLight, hit.shadingNormal) > 0.0f)) continue;
     float passed = 1.0f;
-    if (settings.shadows) {
+    // The scene's switches, as the shadow maps obey them: a light with
+    // "shadows": false, an object that receives none.
+    if (settings.shadows && light.shadows && scene_.objects[hit.object].receivesShadows) {
       Ray shadow = offsetRay(hit, toLight, settings.epsilon);
       if (point) shadow.direction = light.position - shadow.origin;  // the segment is 0 < t < 1
       ++stats.shadowRays;
