@@ -113,7 +113,8 @@ void main() {
     // Seen from behind (a cylindrical quad from above its axis), the back
     // is lit as the front.
     if (!gl_FrontFacing) normal = -normal;
-    color = illuminate(position, normal, material, shadingModel == SHADING_BLINN_PHONG);
+    color = illuminate(position, normal, material, shadingModel == SHADING_BLINN_PHONG) +
+            drawEmissive();
   }
   outColor = vec4(color, alphaMask ? 1.0 : texel.a * draw.kd.w);
 }

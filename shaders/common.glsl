@@ -24,6 +24,7 @@ layout(constant_id = SPEC_MATERIAL_KS) const float materialKsR = 0.0;
 layout(constant_id = SPEC_MATERIAL_KS + 1) const float materialKsG = 0.0;
 layout(constant_id = SPEC_MATERIAL_KS + 2) const float materialKsB = 0.0;
 layout(constant_id = SPEC_MATERIAL_SHININESS) const float materialShininess = 0.0;
+layout(constant_id = SPEC_MATERIAL_EMISSIVE) const uint materialEmissive = 0u;
 
 layout(constant_id = SPEC_LIGHT_CONSTANTS) const bool lightConstants = false;
 layout(constant_id = SPEC_LIGHT_VALUES) const float ambientR = 0.0;

@@ -138,6 +138,7 @@ void main() {
   color += shadowedSum(k, inLightTerms);
 #endif
 #endif
+  if (shadingModel != SHADING_UNLIT) color += drawEmissive();
   if (environmentEnabled && shadingModel != SHADING_UNLIT)
     color += environmentColor(environment, draw.optics.x, draw.optics.y);
   // kd.w: opacity, 1 - transparency, for the blended draws. With the

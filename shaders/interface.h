@@ -119,6 +119,9 @@ using mat4 = glm::mat4;
 #define SPEC_LIGHT_CONSTANTS 26
 #define SPEC_LIGHT_VALUES 27
 #define LIGHT_VALUE_WORDS (3 + 9 * MAX_LIGHTS)
+// The draw's emission compiled in with the rest of its material
+// (SPEC_MATERIAL_CONSTANTS): DrawConstants::object.w's bits, one uint.
+#define SPEC_MATERIAL_EMISSIVE (SPEC_LIGHT_VALUES + LIGHT_VALUE_WORDS)
 #define SHADING_FLAT 0
 #define SHADING_GOURAUD 1
 #define SHADING_PHONG 2
@@ -197,7 +200,9 @@ struct DrawConstants {
   vec4 kd;  // rgb
   vec4 ks;  // rgb, w = shininess n
   ivec4 object;    // x = index into ObjectData[], y = TEXTURE_* flags (the host's record:
-                   // shaders read SPEC_TEXTURE_MAPS), z = 1: receives shadows, w unused
+                   // shaders read SPEC_TEXTURE_MAPS), z = 1: receives shadows, w = emission
+                   // (Material::emissive) as RGB9E5 bits: r, g, b mantissas in bits 0-8,
+                   // 9-17, 18-26, the shared exponent (bias 15) in 27-31 (packEmissive)
   vec4 texturing;  // xy = uv scale (repeats), z = bump scale, w = diffuse map's uv rotation
   vec4 optics;     // environment term: x = reflectivity kr, y = transparency kt, z = ior;
                    // w = normal (and height) map's uv rotation

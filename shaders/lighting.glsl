@@ -31,6 +31,15 @@ SurfaceMaterial drawMaterial() {
   return SurfaceMaterial(draw.ka.rgb, draw.kd.rgb, draw.ks.rgb, draw.ks.w);
 }
 
+// The draw's emission, added unlit to every lit model's colour: compiled in,
+// or from its push constants (RGB9E5 bits, interface.h).
+vec3 drawEmissive() {
+  uint bits = materialConstants ? materialEmissive : uint(draw.object.w);
+  int exponent = int(bits >> 27u) - 15 - 9;
+  return vec3(ldexp(float(bits & 511u), exponent), ldexp(float((bits >> 9u) & 511u), exponent),
+              ldexp(float((bits >> 18u) & 511u), exponent));
+}
+
 // pow(0, 0) is undefined in GLSL; shininess 0 means "specular everywhere it is lit".
 float specularPower(float cosine, float shininess) {
   return shininess <= 0.0 ? 1.0 : pow(max(cosine, 0.0), shininess);

@@ -151,6 +151,64 @@ Scene singleSphere(glm::vec3 eye) {
   return scene;
 }
 
+// Emission is added, unlit, in every lit model, whether the material is
+// compiled into the pipeline or read from the push constants: two black
+// spheres under no light, in no ambient, one glowing (1, 0.5, 0.125) and one
+// (0.25, 0, 1) (equal but for their emission, so a pipeline key without it
+// would draw both alike), must show those values at their centres, within
+// an RGBA16F step, as the tracer's local term adds Material::emissive. Before
+// emission reached the shaders both were black, which the check rejects.
+TEST_F(RenderImages, EmissionIsAddedInEveryLitModel) {
+  Scene scene = singleSphere({0.0f, 0.0f, 6.0f});
+  scene.background = glm::vec3(0.0f);
+  scene.ambient = glm::vec3(0.0f);
+  scene.lights.clear();
+  Material black{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), 8.0f};
+  scene.objects[0].material = black;
+  scene.objects[0].material.emissive = {1.0f, 0.5f, 0.125f};
+  scene.objects[0].transform = translation({-1.5f, 0.0f, 0.0f});
+  scene.objects.push_back(scene.objects[0]);
+  scene.objects[1].material.emissive = {0.25f, 0.0f, 1.0f};
+  scene.objects[1].transform = translation({1.5f, 0.0f, 0.0f});
+  for (ShadingModel model :
+       {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong, ShadingModel::BlinnPhong})
+    for (bool constants : {false, true}) {
+      SCOPED_TRACE(std::string(shadingModelName(model)) + (constants ? ", compiled in" : ""));
+      RenderSettings settings = small(model);
+      settings.materialConstants = constants;
+      ImageRgba image = renderer().renderToImage(scene, settings).image;
+      // The spheres' centres: 1.5 units either side, 6 units from the eye.
+      const float offset = 1.5f / (6.0f * std::tan(glm::radians(scene.camera.fovyDegrees) / 2.0f)) *
+                           float(kHeight) / 2.0f;
+      for (size_t i = 0; i < 2; ++i) {
+        const float x = float(kWidth) / 2.0f + (i == 0 ? -offset : offset);
+        glm::vec3 seen(image.at(uint32_t(x), kHeight / 2));
+        glm::vec3 expected = scene.objects[i].material.emissive;
+        EXPECT_NEAR(seen.r, expected.r, 1e-3f) << "sphere " << i;
+        EXPECT_NEAR(seen.g, expected.g, 1e-3f) << "sphere " << i;
+        EXPECT_NEAR(seen.b, expected.b, 1e-3f) << "sphere " << i;
+      }
+    }
+}
+
+// The emission's packing into one push-constant word (RGB9E5): exact for
+// values with 9 significant bits, within 1/512 of the largest channel
+// otherwise, never negative or NaN, rounding up into the next exponent.
+TEST(EmissivePacking, KeepsNineBitsOfTheLargestChannel) {
+  EXPECT_EQ(packEmissive(glm::vec3(0.0f)), 0u);
+  EXPECT_EQ(unpackEmissive(packEmissive({1.0f, 0.5f, 0.125f})), glm::vec3(1.0f, 0.5f, 0.125f));
+  EXPECT_EQ(unpackEmissive(packEmissive({4.0f, 2.0f, 0.0f})), glm::vec3(4.0f, 2.0f, 0.0f));
+  EXPECT_EQ(unpackEmissive(packEmissive({-1.0f, NAN, 3.0f})), glm::vec3(0.0f, 0.0f, 3.0f));
+  EXPECT_EQ(unpackEmissive(packEmissive(glm::vec3(1e9f))), glm::vec3(65408.0f));
+  EXPECT_EQ(unpackEmissive(packEmissive(glm::vec3(511.9f / 512.0f))), glm::vec3(1.0f));
+  for (glm::vec3 value : {glm::vec3(0.1f, 0.2f, 0.3f), glm::vec3(12.3f, 0.01f, 7.0f),
+                          glm::vec3(1e-4f, 2e-4f, 3e-4f)}) {
+    glm::vec3 back = unpackEmissive(packEmissive(value));
+    float largest = std::max({value.r, value.g, value.b});
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(back[c], value[c], largest / 512.0f) << c;
+  }
+}
+
 // visibleDraws' order: the opaque draws front to back (early depth testing
 // then skips what they hide), the transparent ones back to front after
 // them, what lies behind the eye culled. The old order (opaque in scene

@@ -129,18 +129,24 @@ void ForwardPass::reloadShaders(const std::map<std::string, std::vector<uint32_t
   for (auto& [variant, pipeline] : pipelines_) pipeline = createPipeline(variant);
 }
 
-// A draw's ka, kd, ks and n as bit patterns: equal keys, equal constants.
-static std::array<uint32_t, 10> materialBits(const gpu::DrawConstants& constants) {
+// A draw's ka, kd, ks, n and emission as bit patterns: equal keys, equal constants.
+static MaterialBits materialBits(const gpu::DrawConstants& constants) {
   glm::vec3 ka(constants.ka), kd(constants.kd), ks(constants.ks);
-  return {std::bit_cast<uint32_t>(ka.r), std::bit_cast<uint32_t>(ka.g),
-          std::bit_cast<uint32_t>(ka.b), std::bit_cast<uint32_t>(kd.r),
-          std::bit_cast<uint32_t>(kd.g), std::bit_cast<uint32_t>(kd.b),
-          std::bit_cast<uint32_t>(ks.r), std::bit_cast<uint32_t>(ks.g),
-          std::bit_cast<uint32_t>(ks.b), std::bit_cast<uint32_t>(constants.ks.w)};
+  return {std::bit_cast<uint32_t>(ka.r),
+          std::bit_cast<uint32_t>(ka.g),
+          std::bit_cast<uint32_t>(ka.b),
+          std::bit_cast<uint32_t>(kd.r),
+          std::bit_cast<uint32_t>(kd.g),
+          std::bit_cast<uint32_t>(kd.b),
+          std::bit_cast<uint32_t>(ks.r),
+          std::bit_cast<uint32_t>(ks.g),
+          std::bit_cast<uint32_t>(ks.b),
+          std::bit_cast<uint32_t>(constants.ks.w),
+          std::bit_cast<uint32_t>(constants.object.w)};
 }
 
 size_t ForwardPass::materialCount(const GpuScene& scene) {
-  std::set<std::array<uint32_t, 10>> materials;
+  std::set<MaterialBits> materials;
   for (const DrawItem& draw : scene.draws) materials.insert(materialBits(draw.constants));
   return materials.size();
 }
@@ -196,7 +202,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
     VkBool32 alphaMask;
     VkBool32 doubleSided;
     VkBool32 materialConstants;
-    std::array<uint32_t, 10> material;  // ka.rgb, kd.rgb, ks.rgb, n: float bit patterns
+    MaterialBits material;  // ka.rgb, kd.rgb, ks.rgb, n: float bit patterns; emission
     int32_t textureMaps;
     VkBool32 refracts;
     LightSpecialization lights;
@@ -206,7 +212,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
               masked ? VK_TRUE : VK_FALSE,
               doubleSided ? VK_TRUE : VK_FALSE,
               material ? VK_TRUE : VK_FALSE,
-              material.value_or(std::array<uint32_t, 10>{}),
+              material.value_or(MaterialBits{}),
               int32_t(textureMaps),
               refracts ? VK_TRUE : VK_FALSE,
               lightSpecialization(lights, lightSets_.find(lightSet))};
@@ -228,6 +234,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
       {SPEC_MATERIAL_KS + 1, offsetof(decltype(constants), material) + 28, 4},
       {SPEC_MATERIAL_KS + 2, offsetof(decltype(constants), material) + 32, 4},
       {SPEC_MATERIAL_SHININESS, offsetof(decltype(constants), material) + 36, 4},
+      {SPEC_MATERIAL_EMISSIVE, offsetof(decltype(constants), material) + 40, 4},
       {/* constantID= */ SPEC_TEXTURE_MAPS, offsetof(decltype(constants), textureMaps), 4},
       {/* constantID= */ SPEC_ENVIRONMENT_REFRACTS, offsetof(decltype(constants), refracts), 4},
   };

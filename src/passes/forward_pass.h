@@ -35,6 +35,10 @@ struct TargetLayout {
   auto operator<=>(const TargetLayout&) const = default;
 };
 
+// A draw's material as compiled in: ka, kd, ks and n as float bit patterns,
+// then its emission's RGB9E5 bits (DrawConstants::object.w).
+using MaterialBits = std::array<uint32_t, 11>;
+
 // One forward pipeline: everything its specialization constants, stages and
 // fixed state are chosen by.
 struct ForwardVariant {
@@ -51,9 +55,9 @@ struct ForwardVariant {
   bool masked = false;       // SPEC_ALPHA_MASK: glTF alphaMode MASK
   bool doubleSided = false;  // SPEC_DOUBLE_SIDED, no culling: glTF doubleSided
   uint32_t textureMaps = 0;  // SPEC_TEXTURE_MAPS (textured only): appliedTextureMaps
-  // SPEC_MATERIAL_CONSTANTS: the draw's ka, kd, ks and n compiled in (their
-  // bit patterns) instead of read from its push constants; empty: read.
-  std::optional<std::array<uint32_t, 10>> material;
+  // SPEC_MATERIAL_CONSTANTS: the draw's ka, kd, ks, n and emission compiled
+  // in (SPEC_MATERIAL_EMISSIVE) instead of read from its push constants; empty: read.
+  std::optional<MaterialBits> material;
   // SPEC_LIGHT_CONSTANTS: ForwardFrame::lightSet compiled in; 0: read.
   uint32_t lightSet = 0;
   auto operator<=>(const ForwardVariant&) const = default;

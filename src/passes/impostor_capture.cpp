@@ -247,7 +247,8 @@ void ImpostorCapture::addImpostors(const Scene& source, GpuScene& scene, uint32_
   };
   // An atlas per full index range; a billboard per atlas and material.
   std::map<std::tuple<uint32_t, uint32_t, int32_t>, int32_t> atlases;
-  std::map<std::pair<int32_t, std::array<float, 11>>, uint32_t> billboards;
+  // Keyed by atlas, material numbers and emission bits.
+  std::map<std::tuple<int32_t, std::array<float, 11>, int32_t>, uint32_t> billboards;
   // Chains are shared by the draws of one mesh: rebuilt once per (chain, impostor).
   std::map<std::tuple<uint32_t, uint32_t, uint32_t>, uint32_t> chains;
   std::vector<DrawLevel> levels;
@@ -285,15 +286,16 @@ void ImpostorCapture::addImpostors(const Scene& source, GpuScene& scene, uint32_
       const gpu::DrawConstants& c = draw.constants;
       std::array<float, 11> material{c.ka.x, c.ka.y, c.ka.z, c.kd.x, c.kd.y,           c.kd.z,
                                      c.ks.x, c.ks.y, c.ks.z, c.ks.w, float(c.object.z)};
-      auto [billboard, fresh] = billboards.emplace(std::make_pair(atlas->second, material),
-                                                   uint32_t(scene.billboards.size()));
+      auto [billboard, fresh] = billboards.emplace(
+          std::make_tuple(atlas->second, material, c.object.w), uint32_t(scene.billboards.size()));
       if (fresh) {
         GpuBillboard out;
         // The cut-out at half coverage; opaque; the atlas's two maps always.
         out.constants.ka = glm::vec4(glm::vec3(c.ka), 0.5f);
         out.constants.kd = glm::vec4(glm::vec3(c.kd), 1.0f);
         out.constants.ks = c.ks;
-        out.constants.object = glm::ivec4(0, TEXTURE_DIFFUSE | TEXTURE_NORMAL, c.object.z, 0);
+        out.constants.object =
+            glm::ivec4(0, TEXTURE_DIFFUSE | TEXTURE_NORMAL, c.object.z, c.object.w);
         out.constants.texturing = glm::vec4(1.0f, 1.0f, 1.0f, 0.0f);
         out.constants.optics = glm::vec4(float(BILLBOARD_IMPOSTOR), 0.5f, float(cells), 0.0f);
         out.impostor = {atlas->second, sphere.centre, impostorHalfSize(sphere.radius, cellTexels),

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <map>
@@ -181,7 +182,8 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
                    (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
                    (material.heightMap.present() ? TEXTURE_HEIGHT : 0) |
                    (uvTransform ? TEXTURE_UV_TRANSFORM : 0);
-    draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0, 0);
+    draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0,
+                                       int32_t(packEmissive(material.emissive)));
     draw.castsShadows = object.castsShadows;
     draw.instanceGroup = object.instanceGroup;
     // The largest factor the transform stretches a length by.
@@ -274,7 +276,8 @@ GpuBillboard gpuBillboard(const Billboard& billboard,
   int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
                  (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
                  (material.heightMap.present() ? TEXTURE_HEIGHT : 0);
-  out.constants.object = glm::ivec4(0, maps, billboard.receivesShadows ? 1 : 0, 0);
+  out.constants.object = glm::ivec4(0, maps, billboard.receivesShadows ? 1 : 0,
+                                    int32_t(packEmissive(material.emissive)));
   out.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, 0.0f);
   int32_t kind = billboard.kind == BillboardKind::Screen      ? BILLBOARD_SCREEN
                  : billboard.kind == BillboardKind::Spherical ? BILLBOARD_SPHERICAL
@@ -387,6 +390,32 @@ LightLayout lightLayoutOf(const Scene& scene) {
         ++slot;
       }
   return layout;
+}
+
+uint32_t packEmissive(glm::vec3 emissive) {
+  constexpr int kMantissaBits = 9, kBias = 15, kMaxExponent = 31;
+  const float largest = std::ldexp(511.0f / 512.0f, kMaxExponent - kBias);  // 65408
+  glm::vec3 c;
+  for (int i = 0; i < 3; ++i)  // !(x > 0) also catches NaN
+    c[i] = !(emissive[i] > 0.0f) ? 0.0f : std::min(emissive[i], largest);
+  const float most = std::max({c.r, c.g, c.b});
+  if (most == 0.0f) return 0;
+  int exponent = 0;
+  std::frexp(most, &exponent);  // most = f 2^exponent, f in [0.5, 1): floor(log2) = exponent - 1
+  int shared = std::max(-kBias - 1, exponent - 1) + 1 + kBias;
+  float step = std::ldexp(1.0f, shared - kBias - kMantissaBits);
+  if (std::floor(most / step + 0.5f) == float(1 << kMantissaBits)) {
+    step *= 2.0f;
+    ++shared;
+  }
+  auto mantissa = [&](float value) { return uint32_t(std::floor(value / step + 0.5f)); };
+  return mantissa(c.r) | mantissa(c.g) << 9 | mantissa(c.b) << 18 | uint32_t(shared) << 27;
+}
+
+glm::vec3 unpackEmissive(uint32_t bits) {
+  const int exponent = int(bits >> 27) - 15 - 9;
+  return {std::ldexp(float(bits & 511u), exponent), std::ldexp(float((bits >> 9) & 511u), exponent),
+          std::ldexp(float((bits >> 18) & 511u), exponent)};
 }
 
 std::vector<uint32_t> gpuLightOrder(const Scene& scene) {

@@ -133,6 +133,14 @@ struct LightLayout {
   auto operator<=>(const LightLayout&) const = default;
 };
 
+// Material::emissive as DrawConstants::object.w holds it: RGB9E5 (9-bit
+// mantissas, one 5-bit exponent, the packing of VK_FORMAT_E5B9G9R9_UFLOAT),
+// rounded to nearest. Each channel keeps 1/512 of the largest one; negative
+// and NaN channels become 0, values past 65408 that. unpackEmissive is the
+// shaders' drawEmissive() on the host.
+uint32_t packEmissive(glm::vec3 emissive);
+glm::vec3 unpackEmissive(uint32_t bits);
+
 // The first MAX_LIGHTS lights of the scene, as makeFrameData orders them.
 LightLayout lightLayoutOf(const Scene& scene);
 // The indices into scene.lights of FrameData::lights, in its order (point lights first).
