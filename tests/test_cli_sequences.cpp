@@ -57,6 +57,28 @@ TEST_F(Sequences, TurntableWritesNumberedFramesStartingAtTheSceneCamera) {
   EXPECT_FALSE(same("spin-0002.png", "spin-0003.png"));
 }
 
+// A run that fails part-way leaves an earlier run's files as they were:
+// every output is staged beside its target and renamed only once all are
+// written. Here frame 4 cannot be written (a folder has its name), so frames
+// 1-3 of the second run, which are of another size, must not replace the
+// first run's, and nothing staged may stay behind.
+TEST_F(Sequences, FailedRunKeepsTheEarlierRunsFiles) {
+  ASSERT_EQ(run("render default --turntable 3 -o " + out("spin.png") + kSmall).exitCode, 0);
+  auto bytes = [&](const std::string& name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string first = bytes("spin-0001.png"), third = bytes("spin-0003.png");
+  fs::create_directory(dir / "spin-0004.png");
+  CommandResult r =
+      run("render default --turntable 4 -o " + out("spin.png") + " --size 64x36 --shadows off");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("spin-0004.png' is a folder"), std::string::npos) << r.output;
+  EXPECT_EQ(bytes("spin-0001.png"), first);
+  EXPECT_EQ(bytes("spin-0003.png"), third);
+  EXPECT_EQ(filesLeft(), 4u);  // three frames and the folder: no staged files
+}
+
 // A half turn of the default camera about the up axis through the look-at
 // point puts the eye at (2 at.x - eye.x, eye.y, 2 at.z - eye.z): frame 3 of 4
 // is the single render of that camera.

@@ -1,10 +1,14 @@
 #include "app/cli_common.h"
 
+#include <sys/random.h>
+
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <regex>
 #include <sstream>
+#include <system_error>
 
 #include "core/base/errors.h"
 #include "core/base/files.h"
@@ -140,20 +144,54 @@ int finishWithValidation(Context& context, int exitCode) {
 OutputGroup::~OutputGroup() {
   if (kept_) return;
   std::error_code ignored;
-  for (const std::filesystem::path& path : written_) std::filesystem::remove(path, ignored);
-  if (madeFolder_) std::filesystem::remove(folder_, ignored);  // only if empty
+  for (size_t i = renamed_; i < staged_.size(); ++i)
+    std::filesystem::remove(staged_[i].staged, ignored);
+  // Only if empty: a failed rename in keep() leaves the files before it.
+  if (madeFolder_) std::filesystem::remove(folder_, ignored);
 }
 
-void OutputGroup::add(const std::filesystem::path& path, const std::function<void()>& write) {
+void OutputGroup::add(const std::filesystem::path& path,
+                      const std::function<void(const std::filesystem::path& staged)>& write) {
+  namespace fs = std::filesystem;
   std::error_code error;
-  if (!folder_.empty() && !madeFolder_ && !std::filesystem::is_directory(folder_, error)) {
-    if (!std::filesystem::create_directory(folder_, error))
+  if (!folder_.empty() && !madeFolder_ && !fs::is_directory(folder_, error)) {
+    if (!fs::create_directory(folder_, error))
       throw InputError("cannot create output folder '" + folder_.string() +
                        "': " + error.message());
     madeFolder_ = true;
   }
-  write();
-  written_.push_back(path);
+  checkWritableFolder(path);
+  uint64_t random = 0;
+  if (getrandom(&random, sizeof random, 0) != sizeof random)
+    throw InputError("cannot write '" + path.string() + "': no random bytes for a staging name");
+  char suffix[24];
+  std::snprintf(suffix, sizeof suffix, "-staged-%016llx", static_cast<unsigned long long>(random));
+  std::string name = ".";
+  name += path.stem().string();
+  name += suffix;
+  name += path.extension().string();
+  fs::path staged = path.parent_path() / name;
+  staged_.push_back({path, staged});
+  try {
+    write(staged);
+  } catch (const InputError& failure) {
+    // The message names the file the user asked for, not its staging name.
+    std::string what = failure.what();
+    const std::string hidden = staged.string();
+    for (size_t at = what.find(hidden); at != std::string::npos; at = what.find(hidden, at))
+      what.replace(at, hidden.size(), path.string());
+    throw InputError(what);
+  }
+}
+
+void OutputGroup::keep() {
+  for (; renamed_ < staged_.size(); ++renamed_) {
+    const Staged& file = staged_[renamed_];
+    if (::rename(file.staged.c_str(), file.target.c_str()) != 0)
+      throw InputError("cannot write '" + file.target.string() +
+                       "': " + std::generic_category().message(errno));
+  }
+  kept_ = true;
 }
 
 }  // namespace shadelab

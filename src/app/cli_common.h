@@ -82,9 +82,12 @@ std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // and any message turns success into exit 1.
 int finishWithValidation(Context& context, int exitCode);
 
-// A command's outputs as one: each file is atomic (writeFileAtomically), and
-// if a later one fails the earlier ones of this run are removed, with the
-// folder when this run made it. Nothing of a failed command stays on disk.
+// A command's outputs as one: each file is written whole to a hidden name
+// beside its target (".NAME-staged-RANDOM.EXT", the extension kept for the
+// writers that go by it), and only keep() renames them all into place. A
+// run that fails before keep() removes what it staged, and the folder when
+// it made it: nothing of a failed command stays on disk, and the files of
+// an earlier run under the same names are left as they were.
 class OutputGroup {
  public:
   // `folder`: made on the first write if it does not exist (empty: none).
@@ -92,15 +95,25 @@ class OutputGroup {
   OutputGroup(const OutputGroup&) = delete;
   OutputGroup& operator=(const OutputGroup&) = delete;
   ~OutputGroup();
-  // Runs `write` (which writes `path`) and remembers the file.
-  void add(const std::filesystem::path& path, const std::function<void()>& write);
-  void keep() { kept_ = true; }  // all written: leave them
+  // Checks that `path` can be written (checkWritableFolder: its folder
+  // exists and is writable, it is not a folder), then runs `write(staged)`,
+  // which writes the file that becomes `path` at keep().
+  void add(const std::filesystem::path& path,
+           const std::function<void(const std::filesystem::path& staged)>& write);
+  // All written: renames each staged file to its target. Throws InputError
+  // naming the file if a rename fails (the remaining staged files are removed).
+  void keep();
 
  private:
   std::filesystem::path folder_;
   bool madeFolder_ = false;
   bool kept_ = false;
-  std::vector<std::filesystem::path> written_;
+  struct Staged {
+    std::filesystem::path target;
+    std::filesystem::path staged;
+  };
+  std::vector<Staged> staged_;
+  size_t renamed_ = 0;
 };
 
 }  // namespace shadelab

@@ -249,26 +249,27 @@ int runBench(const BenchCommandOptions& options, const GlobalOptions& global) {
   // The folder is made only now, with the results: a killed or failed bench
   // leaves no empty folder, and a failed write removes this run's files.
   OutputGroup outputs(folder);
-  outputs.add(folder / "results.csv",
-              [&] { writeTextFile(folder / "results.csv", benchCsv(results, bench, scene.name)); });
+  outputs.add(folder / "results.csv", [&](const std::filesystem::path& to) {
+    writeTextFile(to, benchCsv(results, bench, scene.name));
+  });
   // The error charts only when errors were measured (not with --reference none).
   bool measured = bool(bench.reference.render);
   if (measured) {
-    outputs.add(folder / "error_vs_time.png", [&] {
-      writeImage(errorTimeChart(results, chartedIndex, charted, title),
-                 folder / "error_vs_time.png");
+    outputs.add(folder / "error_vs_time.png", [&](const std::filesystem::path& to) {
+      writeImage(errorTimeChart(results, chartedIndex, charted, title), to);
     });
-    outputs.add(folder / "error_vs_triangles.png", [&] {
-      writeImage(errorTriangleChart(results, chartedIndex, charted, title),
-                 folder / "error_vs_triangles.png");
+    outputs.add(folder / "error_vs_triangles.png", [&](const std::filesystem::path& to) {
+      writeImage(errorTriangleChart(results, chartedIndex, charted, title), to);
     });
   }
   ImageU8 scaling = scalingChart(results, "Scene " + scene.name);
   if (scaling.width > 0)
-    outputs.add(folder / "scaling.png", [&] { writeImage(scaling, folder / "scaling.png"); });
+    outputs.add(folder / "scaling.png",
+                [&](const std::filesystem::path& to) { writeImage(scaling, to); });
   ImageU8 levels = levelOfDetailChart(results, "Scene " + scene.name + " at " + options.size);
   if (levels.width > 0)
-    outputs.add(folder / "lod.png", [&] { writeImage(levels, folder / "lod.png"); });
+    outputs.add(folder / "lod.png",
+                [&](const std::filesystem::path& to) { writeImage(levels, to); });
   outputs.keep();
   FILE* out = options.json.human();
   bool showFrame = axes.sizes.size() > 1 || axes.lights != std::vector<uint32_t>{0};

@@ -342,8 +342,11 @@ int runCompare(const CompareOptions& options, const GlobalOptions& global) {
   if (regions) rows.push_back({regionCell(*regions, sheet.report)});
   const std::filesystem::path &sheetPath = plan.sheetPath, &jsonPath = plan.jsonPath;
   OutputGroup outputs;
-  outputs.add(sheetPath, [&] { writeImage(composeSheet(rows), sheetPath); });
-  outputs.add(jsonPath, [&] { writeTextFile(jsonPath, sheet.report.dump(2) + "\n"); });
+  outputs.add(sheetPath,
+              [&](const std::filesystem::path& to) { writeImage(composeSheet(rows), to); });
+  outputs.add(jsonPath, [&](const std::filesystem::path& to) {
+    writeTextFile(to, sheet.report.dump(2) + "\n");
+  });
   outputs.keep();
   std::fprintf(out, "wrote %s and %s\n", sheetPath.c_str(), jsonPath.c_str());
   // The report written beside the sheet, with what only this run knows.

@@ -60,8 +60,9 @@ std::vector<Camera> sequenceCameras(const RenderOptions& options, const Camera& 
 }
 
 // Renders one frame per camera into NAME-0001.EXT ..., all or nothing: a
-// failure part-way removes the frames written (OutputGroup). With --gif, also
-// NAME.gif. Returns the frame paths (and the GIF's, last) and the stats.
+// failure part-way leaves no file of this run and an earlier run's files as
+// they were (OutputGroup). With --gif, also NAME.gif. Returns the frame paths (and the GIF's, last)
+// and the stats.
 std::vector<std::string> writeSequence(Renderer& renderer, const Scene& scene,
                                        const FrameSettings& settings,
                                        const std::vector<Camera>& cameras,
@@ -73,14 +74,16 @@ std::vector<std::string> writeSequence(Renderer& renderer, const Scene& scene,
   stats = renderer.renderSequence(scene, settings, cameras, [&](uint32_t i, ImageRgba&& image) {
     std::string path = sequenceFramePath(options.output, i + 1);
     if (options.gif) animation.push_back(encodeSrgb8(image));
-    outputs.add(path, [&] { writeImage(image, path); });
+    outputs.add(path, [&](const std::filesystem::path& to) { writeImage(image, to); });
     written.push_back(path);
     progress.step();
   });
   progress.finish();
   if (options.gif) {
     std::string gif = std::filesystem::path(options.output).replace_extension(".gif").string();
-    outputs.add(gif, [&] { writeAnimatedGif(animation, gif, options.framesPerSecond); });
+    outputs.add(gif, [&](const std::filesystem::path& to) {
+      writeAnimatedGif(animation, to, options.framesPerSecond);
+    });
     written.push_back(gif);
   }
   outputs.keep();
