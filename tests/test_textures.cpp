@@ -6,10 +6,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <limits>
 #include <numbers>
 
 #include "core/base/errors.h"
 #include "core/base/image.h"
+#include "core/scene/environment.h"
 #include "core/scene/procedural_textures.h"
 #include "core/scene/texture.h"
 #include "core/scene/uv_mapping.h"
@@ -91,6 +94,35 @@ TEST(TextureFile, MissingAndUnreadableFilesNameTheFile) {
   fs::path garbage = folder / "garbage.png";
   std::ofstream(garbage) << "not an image";
   EXPECT_THROW(loadTextureFile(garbage, TextureRole::Color), InputError);
+}
+
+// A float file's NaN or infinite texels are refused, naming the file, the
+// count and the first one, as a texture and as a panorama (instead of black
+// texels, or a black or white sky). The same file with finite values loads.
+TEST(TextureFile, NonFiniteTexelsAreRefused) {
+  fs::path folder = test::testFolder();
+  fs::path path = folder / "nan.exr";
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  writeRaw<float>(path, 2, 2, 3, OIIO::TypeDesc::FLOAT,
+                  {0.5f, 0.5f, 0.5f, 0.2f, 0.3f, 0.4f, 0.1f, nan, 0.1f, inf, 0.0f, 0.0f});
+  for (auto load : {std::function<void()>([&] { loadTextureFile(path, TextureRole::Color); }),
+                    std::function<void()>([&] { readLinearImage(path); })}) {
+    try {
+      load();
+      ADD_FAILURE() << "no InputError";
+    } catch (const InputError& error) {
+      std::string what = error.what();
+      EXPECT_NE(what.find(path.string()), std::string::npos) << what;
+      EXPECT_NE(what.find("2 texel(s) NaN or infinite (the first at x, y = 0, 1)"),
+                std::string::npos)
+          << what;
+    }
+  }
+  fs::path finite = folder / "finite.exr";
+  writeRaw<float>(finite, 1, 1, 3, OIIO::TypeDesc::FLOAT, {3.0e38f, 0.0f, 1.0f});
+  EXPECT_NO_THROW(loadTextureFile(finite, TextureRole::Color));
+  EXPECT_NO_THROW(readLinearImage(finite));
 }
 
 TEST(Procedural, CheckerAlternatesPerCellAndTiles) {

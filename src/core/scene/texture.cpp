@@ -59,6 +59,10 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
     return uint8_t(
         std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 255.0f));
   };
+  // A float file's NaN or infinite texels have no colour to give: refused,
+  // not drawn as black (what the clamp below would make of them).
+  size_t nonFinite = 0;
+  std::string first;
   for (size_t p = 0; p < size_t(texture.width) * texture.height; ++p) {
     size_t x = p % texture.width;
     if (x == 0) {
@@ -68,11 +72,17 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
     const float* in = &row[x * channels];
     float rgba[4] = {in[0], channels >= 3 ? in[1] : in[0], channels >= 3 ? in[2] : in[0],
                      channels == 4 ? in[3] : (channels == 2 ? in[1] : 1.0f)};
+    if (!std::all_of(rgba, rgba + 4, [](float v) { return std::isfinite(v); }) && nonFinite++ == 0)
+      first = std::to_string(x) + ", " + std::to_string(p / texture.width);
     for (int c = 0; c < 4; ++c) {
       bool encode = c < 3 && linearLight && role == TextureRole::Color;
       texture.rgba8[p * 4 + c] = quantize(encode ? linearToSrgb(rgba[c]) : rgba[c]);
     }
   }
+  if (nonFinite > 0)
+    throw InputError("texture file '" + name + "': " + std::to_string(nonFinite) +
+                     " texel(s) NaN or infinite (the first at x, y = " + first +
+                     "); expected finite values");
   return texture;
 }
 
