@@ -222,6 +222,56 @@ TEST(GltfLoader, PerspectiveCameraWithoutFarPlane) {
   EXPECT_EQ(camera.far, 2500.0f);  // none given: 10^4 near
 }
 
+// Numbers and names the spec bounds, refused with the field named when a
+// file breaks them (they used to be drawn: a 1e300 light as a white frame,
+// a light of type "laser" as a point light, a wrap mode of 1234 as repeat);
+// each file is loaded unchanged first, so only the one edit fails it.
+TEST(GltfLoader, OutOfSpecLightsSamplersAndFactorsAreRefused) {
+  auto parsed = [](const std::string& file) {
+    std::ifstream in(data(file));
+    return nlohmann::json::parse(in);
+  };
+  auto errorOf = [](const nlohmann::json& document) {
+    std::string text = document.dump();
+    try {
+      parseGltfScene(std::vector<uint8_t>(text.begin(), text.end()), "edited.gltf");
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("loaded");
+  };
+  const nlohmann::json lights = parsed("lights_camera.gltf");
+  const nlohmann::json textured = parsed("textured.gltf");
+  ASSERT_EQ(errorOf(lights), "loaded");
+  ASSERT_EQ(errorOf(textured), "loaded");
+  nlohmann::json edited = lights;
+  edited["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = 1e300;
+  EXPECT_THAT(errorOf(edited),
+              HasSubstr("edited.gltf: extensions.KHR_lights_punctual.lights[0]"
+                        ".intensity: 1e+300; expected a number from 0 to 1000000"));
+  edited = lights;
+  edited["extensions"]["KHR_lights_punctual"]["lights"][1]["type"] = "laser";
+  EXPECT_THAT(errorOf(edited), HasSubstr("lights[1].type: 'laser'; expected directional, point "
+                                         "or spot"));
+  edited = textured;
+  edited["samplers"][0]["wrapS"] = 1234;
+  EXPECT_THAT(errorOf(edited), HasSubstr("samplers[0].wrapS: 1234; expected 33071"));
+  edited = textured;
+  edited["samplers"][0]["minFilter"] = 1;
+  EXPECT_THAT(errorOf(edited), HasSubstr("samplers[0].minFilter: 1; expected 9728"));
+  edited = textured;
+  edited["materials"][0]["normalTexture"]["scale"] = 1e300;
+  EXPECT_THAT(errorOf(edited), HasSubstr("materials[0].normalTexture.scale: 1e+300; expected a "
+                                         "finite number"));
+  edited = textured;
+  edited["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -2;
+  edited["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  EXPECT_THAT(errorOf(edited), HasSubstr("emissiveStrength: -2; expected a number from 0 to "
+                                         "1000000"));
+  edited["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1e7;
+  EXPECT_THAT(errorOf(edited), HasSubstr("emissiveStrength: 1e+07; expected a number from 0"));
+}
+
 TEST(GltfLoader, BinaryGlbLoads) {
   Scene scene = loadScene(data("triangle.glb").string());
   ASSERT_EQ(scene.objects.size(), 1u);

@@ -15,6 +15,8 @@ namespace shadelab::gltf {
 [[noreturn]] void fail(const std::string& source, const std::string& where,
                        const std::string& what);
 std::string describeMesh(const tinygltf::Model& model, int mesh);  // meshes[2] 'name'
+// A number of the file as a message shows it: 0.5, 1e+300.
+std::string numberText(double value);
 
 // tinygltf leaves alphaCutoff at 0.5 when it is not a number: every
 // materials[i].alphaCutoff in the file's JSON must be a number >= 0

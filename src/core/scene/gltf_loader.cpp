@@ -437,10 +437,15 @@ class NodeWalker {
            "refers to light " + std::to_string(index) + ", which does not exist");
     const tinygltf::Light& source = model_.lights[size_t(index)];
     std::string lightWhere = "extensions.KHR_lights_punctual.lights[" + std::to_string(index) + "]";
-    // A negative light would darken; the extension says 0 or more (candela or lux).
-    if (!(source.intensity >= 0.0 && std::isfinite(source.intensity)))
+    // A negative light would darken; the extension says 0 or more (candela or
+    // lux). Past 1e6 (the colour's clamp, and the environments' limit) the
+    // float products overflow.
+    if (!(source.intensity >= 0.0 && source.intensity <= 1e6))
       fail(source_, lightWhere + ".intensity",
-           std::to_string(source.intensity) + "; expected a finite number of 0 or more");
+           gltf::numberText(source.intensity) + "; expected a number from 0 to 1000000");
+    if (source.type != "directional" && source.type != "point" && source.type != "spot")
+      fail(source_, lightWhere + ".type",
+           "'" + source.type + "'; expected directional, point or spot");
     if (!source.color.empty() && source.color.size() != 3)
       fail(source_, lightWhere + ".color",
            std::to_string(source.color.size()) + " numbers; expected 3 (r, g, b)");

@@ -180,11 +180,18 @@ const Material& MaterialTable::material(int index) {
   // (n = 2 / alpha^2 - 2, Walter et al. 2007), clamped to a drawable range.
   float a = std::max(roughness * roughness, 1e-3f);
   material.shininess = std::clamp(2.0f / (a * a) - 2.0f, 1.0f, 2048.0f);
-  material.emissive = glm::max(vec3Of(source.emissiveFactor, glm::vec3(0.0f)), 0.0f);
+  // 0..1 as the spec bounds it (like baseColorFactor); the extension's strength scales past 1.
+  material.emissive = glm::clamp(vec3Of(source.emissiveFactor, glm::vec3(0.0f)), 0.0f, 1.0f);
   auto strength = source.extensions.find("KHR_materials_emissive_strength");
-  if (strength != source.extensions.end() && strength->second.Has("emissiveStrength"))
-    material.emissive *=
-        std::max(float(strength->second.Get("emissiveStrength").GetNumberAsDouble()), 0.0f);
+  if (strength != source.extensions.end() && strength->second.Has("emissiveStrength")) {
+    const std::string field =
+        where + ".extensions.KHR_materials_emissive_strength.emissiveStrength";
+    float factor = finiteNumber(strength->second.Get("emissiveStrength"), source_, field);
+    // At most 1e6, as lights' intensities and environments are bounded.
+    if (!(factor >= 0.0f && factor <= 1e6f))
+      fail(source_, field, numberText(factor) + "; expected a number from 0 to 1000000");
+    material.emissive *= factor;
+  }
   // BLEND: translucent by the factor's alpha (the texture's alpha is not
   // read). MASK: cut out where the factor's alpha times the texel's is below
   // alphaCutoff (checkAlphaCutoffs refused a negative or non-numeric one).
@@ -204,7 +211,12 @@ const Material& MaterialTable::material(int index) {
     int set = texCoordSet(index);
     if (base.set == set) material.diffuseMap = slot(base, true, where);
     if (normal.set == set) material.normalMap = slot(normal, false, where);
-    if (material.normalMap.present()) material.bumpScale = float(source.normalTexture.scale);
+    if (material.normalMap.present()) {
+      if (!std::isfinite(float(source.normalTexture.scale)))
+        fail(source_, where + ".normalTexture.scale",
+             numberText(source.normalTexture.scale) + "; expected a finite number");
+      material.bumpScale = float(source.normalTexture.scale);
+    }
   }
   return materials_[index] = material;
 }
@@ -259,6 +271,20 @@ SamplerDesc MaterialTable::sampler(int index, const std::string& where) const {
   if (size_t(index) >= model_.samplers.size())
     fail(source_, where, "refers to sampler " + std::to_string(index) + ", which does not exist");
   const tinygltf::Sampler& sampler = model_.samplers[size_t(index)];
+  // The spec's enums only: another number is a broken file, not a default.
+  const std::string samplerWhere = "samplers[" + std::to_string(index) + "]";
+  auto checkEnum = [&](int value, const char* field, std::initializer_list<int> allowed,
+                       const char* expected) {
+    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+      fail(source_, samplerWhere + "." + field,
+           std::to_string(value) + "; expected " + expected + " (" + where + ")");
+  };
+  const char* wraps = "33071 (CLAMP_TO_EDGE), 33648 (MIRRORED_REPEAT) or 10497 (REPEAT)";
+  checkEnum(sampler.wrapS, "wrapS", {33071, 33648, 10497}, wraps);
+  checkEnum(sampler.wrapT, "wrapT", {33071, 33648, 10497}, wraps);
+  checkEnum(sampler.magFilter, "magFilter", {-1, 9728, 9729}, "9728 (NEAREST) or 9729 (LINEAR)");
+  checkEnum(sampler.minFilter, "minFilter", {-1, 9728, 9729, 9984, 9985, 9986, 9987},
+            "9728 (NEAREST), 9729 (LINEAR) or 9984-9987 (the MIPMAP ones)");
   desc.wrapU = wrapOf(sampler.wrapS);
   desc.wrapV = wrapOf(sampler.wrapT);
   desc.filter = filterOf(sampler.minFilter, sampler.magFilter);

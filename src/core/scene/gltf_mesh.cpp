@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <sstream>
 #include <string>
 
 #include "core/base/errors.h"
@@ -246,6 +247,12 @@ void mergeIdenticalVertices(Mesh& mesh) {
 
 void fail(const std::string& source, const std::string& where, const std::string& what) {
   throw InputError(source + ": " + (where.empty() ? "" : where + ": ") + what);
+}
+
+std::string numberText(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
 }
 
 std::string describeMesh(const tinygltf::Model& model, int mesh) {
