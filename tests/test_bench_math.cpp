@@ -136,6 +136,25 @@ TEST(BenchCsv, ParsesColumnsAndRowsAndRejectsRaggedLines) {
   EXPECT_THROW(parseBenchCsv("", "t.csv"), InputError);
 }
 
+// As a spreadsheet saves a results.csv: a byte order mark, CRLF and quoted
+// fields read as the plain file; a header naming a column twice is refused.
+TEST(BenchCsv, ReadsWhatASpreadsheetSavesAndRefusesAColumnTwice) {
+  BenchTable plain = parseBenchCsv("scene,mode\nspheres,flat\n", "t.csv");
+  for (const char* saved : {"\xEF\xBB\xBFscene,mode\r\nspheres,flat\r\n\r\n",
+                            "\"scene\",\"mode\"\n\"spheres\",flat\n"}) {
+    BenchTable table = parseBenchCsv(saved, "t.csv");
+    EXPECT_EQ(table.columns, plain.columns) << saved;
+    EXPECT_EQ(table.rows, plain.rows) << saved;
+  }
+  EXPECT_EQ(parseBenchCsv("a\n\"say \"\"hi\"\"\"\n", "t.csv").rows[0][0], "say \"hi\"");
+  try {
+    parseBenchCsv("scene,flip,flip\nspheres,0.1,0.2\n", "t.csv");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(), "'t.csv': column 'flip' twice in the header; expected each once");
+  }
+}
+
 TEST(BenchCsv, WritesOneRowPerResultWithEveryMetric) {
   BenchOptions options{4, 1, {"raster", "", {}}, errorMetrics()};
   BenchResult result;
@@ -237,6 +256,13 @@ TEST(QualityChoice, CandidatesFromBenchKeepTheSceneSampleCountAndLitModels) {
   EXPECT_DOUBLE_EQ(found[0].costMs, 1.0);
   EXPECT_THROW(candidatesFromBench(table, "r.csv", "default", rmse, 1), InputError);
   EXPECT_THROW(candidatesFromBench(table, "r.csv", "spheres", findErrorMetric("psnr", "m"), 1),
+               InputError);
+  // A metric outside the values it can take (FLIP is 0..1) is refused.
+  BenchTable negative = parseBenchCsv(
+      "scene,mode,tessellation,msaa,triangles,device_median_ms,flip\n"
+      "spheres,flat,1,1,10,1.0,-0.5\n",
+      "r.csv");
+  EXPECT_THROW(candidatesFromBench(negative, "r.csv", "spheres", findErrorMetric("flip", "m"), 1),
                InputError);
 }
 

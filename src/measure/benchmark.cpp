@@ -243,15 +243,38 @@ size_t BenchTable::column(const std::string& name, const std::string& source) co
 }
 
 BenchTable parseBenchCsv(const std::string& text, const std::string& source) {
+  // As a spreadsheet saves the file: a UTF-8 byte order mark, CRLF line
+  // ends and fields in double quotes ("" inside one is a quote) are read as
+  // the plain file would be. A quoted field may not hold a comma.
+  auto fields = [](std::string line) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::vector<std::string> cells = splitFields(line);
+    for (std::string& cell : cells)
+      if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"') {
+        const std::string inner = cell.substr(1, cell.size() - 2);
+        std::string unquoted;
+        for (size_t i = 0; i < inner.size(); ++i) {
+          unquoted += inner[i];
+          if (inner[i] == '"' && i + 1 < inner.size() && inner[i + 1] == '"') ++i;
+        }
+        cell = unquoted;
+      }
+    return cells;
+  };
   BenchTable table;
-  std::stringstream lines(text);
+  std::stringstream lines(text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text);
   std::string line;
-  if (!std::getline(lines, line) || line.empty())
+  if (!std::getline(lines, line) || line.empty() || line == "\r")
     throw InputError("'" + source + "': empty, expected bench results with a header line");
-  table.columns = splitFields(line);
+  table.columns = fields(line);
+  for (size_t i = 0; i < table.columns.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (table.columns[i] == table.columns[j])
+        throw InputError("'" + source + "': column '" + table.columns[i] +
+                         "' twice in the header; expected each once");
   for (size_t number = 2; std::getline(lines, line); ++number) {
-    if (line.empty()) continue;
-    table.rows.push_back(splitFields(line));
+    if (line.empty() || line == "\r") continue;
+    table.rows.push_back(fields(line));
     if (table.rows.back().size() != table.columns.size())
       throw InputError("'" + source + "' line " + std::to_string(number) + ": " +
                        std::to_string(table.rows.back().size()) + " values, expected " +

@@ -102,11 +102,13 @@ std::vector<QualityCandidate> candidatesFromBench(const BenchTable& table,
       mapSize = uint32_t(number(size_t(sizeColumn - table.columns.begin()), 1, kMaxShadowMapSize));
     // The ranges bench measures (--tess, --shadow-sizes): a choice outside
     // them was not made by shadelab, and could cost any number of triangles.
-    candidates.push_back({{*model, float(number(tess, kMinTessellation, kMaxTessellation)), msaa,
-                           std::nullopt, *shadows, mapSize},
-                          uint64_t(number(triangles, 0, 1e15)),
-                          number(cost, 0, 1e9),
-                          number(error, -1e9, 1e9)});
+    candidates.push_back(
+        {{*model, float(number(tess, kMinTessellation, kMaxTessellation)), msaa, std::nullopt,
+          *shadows, mapSize},
+         uint64_t(number(triangles, 0, 1e15)),
+         number(cost, 0, 1e9),
+         // The metric's own range (FLIP 0..1, SSIM -1..1, ...).
+         number(error, std::max(metric.lowest, -1e9), std::min(metric.highest, 1e9))});
   }
   if (candidates.empty())
     throw InputError("'" + source + "': no lit settings of scene '" + sceneName + "' at msaa " +
