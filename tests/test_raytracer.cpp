@@ -286,6 +286,23 @@ TEST(CameraRays, UnprojectExactlyAsTheProjectionMatrix) {
   }
 }
 
+// A near plane 1e7 times closer than the far one: the usual projection's
+// far / (near - far) rounds to -1 in a float, and rays unprojected through
+// it came out as nothing (a blank trace the rasteriser drew fine). They are
+// unprojected through the reversed-Z matrix: from the near plane towards
+// the far one, along the view.
+TEST(CameraRays, HoldAtAFarToNearRatioOfTenMillion) {
+  Camera camera;
+  camera.eye = {0, 0, 5};
+  camera.near = 1e-5f;
+  camera.far = 100.0f;
+  const CameraRays rays(camera, 64, 64);
+  const Ray ray = rays.through(32.0f, 32.0f);
+  EXPECT_NEAR(glm::distance(ray.origin, camera.eye), 1e-5f, 1e-6f);
+  EXPECT_NEAR(glm::length(ray.direction), 100.0f - 1e-5f, 1e-3f);
+  expectNear(glm::normalize(ray.direction), {0, 0, -1}, 1e-6f);
+}
+
 // A camera ray's colour is lighting.cpp's equation in the rasteriser's eye
 // space, at the exact surface point.
 TEST(RayTracer, LocalShadingIsTheIlluminationEquationInEyeSpace) {

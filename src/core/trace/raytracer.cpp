@@ -87,16 +87,20 @@ glm::vec3 missColour(const Scene& scene, glm::vec3 direction) {
 
 CameraRays::CameraRays(const Camera& camera, uint32_t width, uint32_t height)
     : eye_(camera.eye), width_(width), height_(height) {
+  // The reversed-Z projection (near at depth 1, far at 0): the usual one
+  // keeps far / (near - far) in a float, which rounds to -1 once far / near
+  // passes about 1e7, and its inverse then throws the rays away (a blank
+  // trace of a camera with near 1e-5 and far 100, which the rasteriser drew).
   const glm::mat4 clip =
-      camera.projectionMatrix(float(width) / float(height)) * camera.viewMatrix();
+      camera.projectionMatrix(float(width) / float(height), true) * camera.viewMatrix();
   clipToWorld_ = glm::inverse(glm::dmat4(clip));
 }
 
 Ray CameraRays::through(float x, float y) const {
   const double ndcX = 2.0 * double(x) / width_ - 1.0;
   const double ndcY = 2.0 * double(y) / height_ - 1.0;  // Vulkan: y down, like the rows
-  glm::dvec4 nearPoint = clipToWorld_ * glm::dvec4(ndcX, ndcY, 0.0, 1.0);
-  glm::dvec4 farPoint = clipToWorld_ * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+  glm::dvec4 nearPoint = clipToWorld_ * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+  glm::dvec4 farPoint = clipToWorld_ * glm::dvec4(ndcX, ndcY, 0.0, 1.0);
   const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
   const glm::dvec3 end = glm::dvec3(farPoint) / farPoint.w;
   return {glm::vec3(origin), glm::vec3(end - origin)};
