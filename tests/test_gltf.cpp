@@ -272,6 +272,32 @@ TEST(GltfLoader, OutOfSpecLightsSamplersAndFactorsAreRefused) {
   EXPECT_THAT(errorOf(edited), HasSubstr("emissiveStrength: 1e+07; expected a number from 0"));
 }
 
+// Nodes share meshes, so a few kilobytes can place millions of objects:
+// 1,000 nodes of a mesh of 300 primitives are 300,000, refused as they are
+// placed (they used to be built first, gigabytes of them).
+TEST(GltfLoader, FilesPlacingTooManyObjectsAreRefused) {
+  std::ifstream in(data("hierarchy.gltf"));
+  nlohmann::json document = nlohmann::json::parse(in);
+  nlohmann::json primitive = document["meshes"][0]["primitives"][0];
+  document["meshes"][0]["primitives"] = nlohmann::json::array();
+  for (int p = 0; p < 300; ++p) document["meshes"][0]["primitives"].push_back(primitive);
+  document["nodes"] = nlohmann::json::array();
+  document["scenes"][0]["nodes"] = nlohmann::json::array();
+  for (int n = 0; n < 1000; ++n) {
+    document["nodes"].push_back({{"mesh", 0}});
+    document["scenes"][0]["nodes"].push_back(n);
+  }
+  std::string text = document.dump();
+  EXPECT_LT(text.size(), 200'000u);
+  try {
+    parseGltfScene(std::vector<uint8_t>(text.begin(), text.end()), "many.gltf");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("many.gltf: nodes[873]: the file's nodes place more than "
+                                        "262144 objects"));
+  }
+}
+
 TEST(GltfLoader, BinaryGlbLoads) {
   Scene scene = loadScene(data("triangle.glb").string());
   ASSERT_EQ(scene.objects.size(), 1u);

@@ -367,6 +367,13 @@ class NodeWalker {
       }
       std::string name = mesh.name.empty() ? "mesh " + std::to_string(meshIndex) : mesh.name;
       if (mesh.primitives.size() > 1) name += " #" + std::to_string(p);
+      // Nodes share meshes, so a small file can place millions of objects
+      // (1,000 nodes of a mesh of 20,000 primitives): refused here, before
+      // they take gigabytes, not after.
+      if (++placed_ > kMaxGltfObjects)
+        fail(source_, where,
+             "the file's nodes place more than " + std::to_string(kMaxGltfObjects) +
+                 " objects (one per mesh primitive per node); expected at most that many");
       scene_.objects.push_back({name, found->second, world, material});
     }
     if (scene_.objects.size() == before)
@@ -374,7 +381,11 @@ class NodeWalker {
     // A finite matrix can still carry finite vertices past the float range
     // (a scale of 1e38): the box's corners, taken to the world, show it.
     for (size_t o = before; o < scene_.objects.size(); ++o) {
-      Bounds box = computeBounds(scene_.meshes[scene_.objects[o].mesh]);
+      uint32_t meshOf = scene_.objects[o].mesh;
+      auto boxFound = meshBounds_.find(meshOf);
+      if (boxFound == meshBounds_.end())
+        boxFound = meshBounds_.emplace(meshOf, computeBounds(scene_.meshes[meshOf])).first;
+      const Bounds& box = boxFound->second;
       for (int corner = 0; corner < 8; ++corner) {
         glm::vec3 local(corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
                         corner & 4 ? box.max.z : box.min.z);
@@ -476,6 +487,8 @@ class NodeWalker {
   // (mesh, primitive, mirrored, TEXCOORD set)
   std::map<std::tuple<int, int, bool, int>, uint32_t> meshes_;
   std::set<int> visited_;
+  std::map<uint32_t, Bounds> meshBounds_;  // each placed mesh's box, found once
+  size_t placed_ = 0;                      // objects this file placed
   GltfImport* result_ = nullptr;
 };
 

@@ -21,6 +21,10 @@ struct GltfImport {
   std::optional<Camera> camera;  // the first camera node of the scene
 };
 
+// The most objects (one per mesh primitive per node that places it) one
+// file may add; more is refused with the file named.
+inline constexpr size_t kMaxGltfObjects = 262'144;
+
 // Appends the file's meshes, materials and textures to `scene`, each object
 // under `parent` (the matrix stack continues into the glTF node hierarchy).
 GltfImport appendGltf(Scene& scene, const std::filesystem::path& path,
