@@ -1095,7 +1095,8 @@ const std::vector<BadCase>& badCases() {
                                                   {"eye": [0, 0, -5], "at": [0, 0, 0]}]})"}},
        "render -o {dir}/a.png --size 16x16 --camera-path {dir}/path.json",
        2,
-       kError + "{dir}/path.json: frames: frame 1, between cameras[0] and cameras[1]: its "},
+       kError + "{dir}/path.json: frames: frame 2, between cameras[0] and cameras[1]: the camera's "
+                "at: "},
       {Group::Options,
        "gif of one image",
        {},

@@ -116,7 +116,8 @@ std::vector<Camera> parseCameraPath(const std::string& text, const std::string& 
          "\"fovy\": degrees})");
   if (keys.size() > kMaxSequenceFrames)
     fail(source, where.empty() ? "the file" : where,
-         std::to_string(keys.size()) + " cameras, more than " + frameRange());
+         std::to_string(keys.size()) + " cameras; expected at most " +
+             std::to_string(kMaxSequenceFrames) + " (a sequence's most frames)");
   std::vector<Camera> cameras;
   for (size_t i = 0; i < keys.size(); ++i)
     cameras.push_back(readCamera(keys[i], source, where + "[" + std::to_string(i) + "]", base));
@@ -139,9 +140,10 @@ std::vector<Camera> parseCameraPath(const std::string& text, const std::string& 
     // of `at` meet it halfway, opposite ups cancel.
     if (std::optional<CameraProblem> problem = findCameraProblem(path.back()))
       fail(source, "frames",
-           "frame " + std::to_string(i) + ", between " + where + "[" + std::to_string(key) +
-               "] and " + where + "[" + std::to_string(key + 1) + "]: its " + problem->field + " " +
-               problem->problem + "; " + problem->expected + " (add a camera between them)");
+           "frame " + std::to_string(i + 1) + ", between " + where + "[" + std::to_string(key) +
+               "] and " + where + "[" + std::to_string(key + 1) + "]: the camera's " +
+               problem->field + ": " + problem->problem + "; expected " + problem->expected +
+               " (add a camera between them)");
   }
   return path;
 }
