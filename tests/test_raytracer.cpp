@@ -185,6 +185,34 @@ TEST(RayTracer, ShadowSwitchesOfLightsAndObjectsAreObeyed) {
   EXPECT_NEAR(shade(floorReceivesNone), lit, 1e-5f);
 }
 
+// glTF's alpha blend is coverage: a pane of alpha 0.25 (kt 0.75) shows a
+// quarter of its own colour and three quarters of what lies behind, seen
+// straight through, as the rasteriser's blend draws it; shadow rays pass
+// kt without Fresnel. A scene-file pane of the same kt (Whitted's
+// transmission) adds the whole local colour instead.
+TEST(RayTracer, CoverageAlphaWeighsTheSurfaceByItsCoverage) {
+  ShapeDesc pane{ShapeKind::Plane};
+  pane.size = 4.0f;
+  Scene scene = oneObject(pane, glm::mat4(1.0f));
+  scene.ambient = glm::vec3(0.5f);
+  Material& material = scene.objects[0].material;
+  material = {glm::vec3(1.0f), glm::vec3(0.0f), glm::vec3(0.0f), 8.0f};
+  material.transparency = 0.75f;
+  material.ior = 1.0f;
+  const Ray down{{0.3f, 2.0f, 0.1f}, {0, -1, 0}};
+  auto seen = [&] {
+    TraceStats stats;
+    return RayTracer(scene).traceRay(down, kInf, down.origin, 0, 1.0f, TraceSettings{}, stats);
+  };
+  const glm::vec3 behind = scene.background;
+  expectNear(seen(), glm::vec3(0.5f) + 0.75f * behind, 1e-5f);  // Whitted
+  material.alphaCoverage = true;
+  material.ior = 1.5f;  // ignored: coverage does not bend the rays
+  expectNear(seen(), 0.25f * glm::vec3(0.5f) + 0.75f * behind, 1e-5f);
+  const Ray up{{0.3f, -2.0f, 0.1f}, {0, 1, 0}};
+  EXPECT_FLOAT_EQ(RayTracer(scene).transmittance(up, kInf), 0.75f);  // no Fresnel
+}
+
 TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
   ShapeDesc sphere{ShapeKind::Icosphere};
   sphere.radius = 1.0f;

@@ -195,7 +195,10 @@ const Material& MaterialTable::material(int index) {
   // BLEND: translucent by the factor's alpha (the texture's alpha is not
   // read). MASK: cut out where the factor's alpha times the texel's is below
   // alphaCutoff (checkAlphaCutoffs refused a negative or non-numeric one).
-  if (source.alphaMode == "BLEND") material.transparency = 1.0f - alpha;
+  if (source.alphaMode == "BLEND") {
+    material.transparency = 1.0f - alpha;
+    material.alphaCoverage = true;
+  }
   if (source.alphaMode == "MASK") {
     material.alphaCutoff = float(source.alphaCutoff);
     material.alpha = alpha;

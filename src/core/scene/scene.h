@@ -142,11 +142,17 @@ struct Material {
   float reflectivity = 0.0f;  // kr: fraction of the reflected ray's colour added, 0..1
   float transparency = 0.0f;  // kt: fraction of the refracted ray's colour added, 0..1
   float ior = 1.5f;           // index of refraction of the inside; the outside is 1 (air)
-  glm::vec3 emissive{0.0f};   // added unlit
-  TextureSlot diffuseMap;     // multiplies kd (and ka)
-  TextureSlot normalMap;      // tangent space, xyz = 2 * rgb - 1
-  TextureSlot heightMap;      // r = height; the normal is perturbed by its derivatives
-  float bumpScale = 1.0f;     // normal map xy scale / height map amplitude
+  // glTF alphaMode BLEND: kt is 1 - coverage, a share of the pixel the
+  // surface does not cover. The tracer then weighs the local colour by the
+  // coverage and sees the rest straight through (no refraction, no Fresnel),
+  // as the rasteriser's alpha blend does; otherwise kt is Whitted's
+  // transmission, added to the full local colour.
+  bool alphaCoverage = false;
+  glm::vec3 emissive{0.0f};  // added unlit
+  TextureSlot diffuseMap;    // multiplies kd (and ka)
+  TextureSlot normalMap;     // tangent space, xyz = 2 * rgb - 1
+  TextureSlot heightMap;     // r = height; the normal is perturbed by its derivatives
+  float bumpScale = 1.0f;    // normal map xy scale / height map amplitude
   UvProjection uvProjection = UvProjection::Mesh;  // where the UVs come from
   glm::vec2 uvScale{1.0f};                         // texture repeats per unit of UV (tiling)
   // glTF alphaMode MASK: fragments whose alpha (`alpha` times the diffuse

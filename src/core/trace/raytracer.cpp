@@ -121,8 +121,9 @@ struct RayTracer::TracedObject {
   Bounds worldBounds;
   float transparency = 0.0f;
   float ior = 1.5f;
-  bool castsShadows = true;  // Object::castsShadows: shadow rays pass through it when false
-  uint32_t sceneObject = 0;  // index into Scene::objects
+  bool castsShadows = true;    // Object::castsShadows: shadow rays pass through it when false
+  bool alphaCoverage = false;  // Material::alphaCoverage: shadow rays pass kt, no Fresnel
+  uint32_t sceneObject = 0;    // index into Scene::objects
   UvProjection projection = UvProjection::Mesh;
   Bounds uvBounds;  // the scene mesh's box, which S-mappings are fitted to (as at upload)
 
@@ -285,6 +286,7 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.transparency = object.material.transparency;
     traced.ior = object.material.ior;
     traced.castsShadows = object.castsShadows;
+    traced.alphaCoverage = object.material.alphaCoverage;
     traced.projection = object.material.uvProjection;
     if (traced.projection != UvProjection::Mesh)
       traced.uvBounds = computeBounds(scene.meshes[object.mesh]);
@@ -364,7 +366,7 @@ float RayTracer::transmittance(const Ray& ray, float tMax, bool fresnel) const {
     float tEntry;
     if (!intersectBounds(object.worldBounds, ray, inverse, 0.0f, tMax, tEntry)) continue;
     const Ray local = object.toLocal(ray);
-    if (!fresnel || object.transparency <= 0.0f) {
+    if (!fresnel || object.transparency <= 0.0f || object.alphaCoverage) {
       const uint32_t crossings = object.countHits(local, tMax);
       if (crossings == 0) continue;
       if (object.transparency <= 0.0f) return 0.0f;
@@ -473,16 +475,20 @@ glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uin
   const RayCone next{footprint, cone.spread};
   const Material material = materialAt(ray, hit, footprint);
   glm::vec3 colour = localShading(hit, material, viewer, settings, stats);
+  const float kr = material.reflectivity, kt = material.transparency;
+  // Coverage (glTF BLEND): the surface fills 1 - kt of the pixel.
+  if (material.alphaCoverage) colour *= 1.0f - kt;
   if (depth >= settings.maxDepth) return colour;
   const glm::vec3 incident = glm::normalize(ray.direction);
-  const float kr = material.reflectivity, kt = material.transparency;
   // Of the transmitted share kt, the Fresnel reflectance F goes along the
   // mirror direction and 1 - F is refracted; total internal reflection
   // (F = 1) sends all of it back inside. Entering the object from air
   // (eta = 1 / ior) or leaving it (ior / 1), by the side the ray arrived on.
   std::optional<glm::vec3> refracted;
   float fresnel = 0.0f;
-  if (kt > 0.0f) {
+  if (kt > 0.0f && material.alphaCoverage) {
+    refracted = incident;  // the uncovered share, seen straight through
+  } else if (kt > 0.0f) {
     const float eta = hit.frontFace ? 1.0f / material.ior : material.ior;
     refracted = refractDirection(incident, hit.shadingNormal, eta);
     if (!refracted) {
