@@ -31,7 +31,7 @@ std::string formatDegrees(float value) {
 }
 
 std::string optionFor(const std::string& field) {
-  if (field == "eye" || field == "at" || field == "up") return "--" + field;
+  if (field == "eye" || field == "at" || field == "up" || field == "fovy") return "--" + field;
   return "--ortho";  // near/far and the sides: only --ortho sets them from the command line
 }
 

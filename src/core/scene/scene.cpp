@@ -1,5 +1,7 @@
 #include "core/scene/scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "core/base/errors.h"
@@ -49,6 +51,23 @@ std::optional<CameraProblem> findCameraProblem(const Camera& camera) {
                          "top (" + formatNumber(camera.top) + ") is not greater than bottom (" +
                              formatNumber(camera.bottom) + ")",
                          "bottom < top"};
+  // Narrower than this the projection's scale (1 / tan, 2 / width) leaves
+  // float precision or range: a black or broken image, said here instead.
+  if (camera.projection == Projection::Perspective && !(camera.fovyDegrees >= 1e-3f))
+    return CameraProblem{"fovy",
+                         "fovy " + formatNumber(camera.fovyDegrees) + " degrees is too narrow",
+                         "0.001 to 180 degrees"};
+  if (camera.projection != Projection::Perspective) {
+    const float extent = std::max({std::abs(camera.left), std::abs(camera.right),
+                                   std::abs(camera.bottom), std::abs(camera.top)});
+    if (!(camera.right - camera.left >= std::max(1e-12f, 1e-6f * extent)) ||
+        !(camera.top - camera.bottom >= std::max(1e-12f, 1e-6f * extent)))
+      return CameraProblem{"right",
+                           "the view window (" + formatNumber(camera.right - camera.left) + " x " +
+                               formatNumber(camera.top - camera.bottom) + ") is too small",
+                           "a width and height of at least 1e-12 and a millionth of its "
+                           "largest coordinate"};
+  }
   glm::vec3 view = camera.at - camera.eye;
   if (glm::length(view) == 0.0f)
     return CameraProblem{"at", "at equals eye, so there is no viewing direction",
