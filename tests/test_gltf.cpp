@@ -19,6 +19,7 @@
 namespace shadelab {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 std::filesystem::path data(const std::string& name) {
@@ -249,6 +250,11 @@ TEST(GltfLoader, OutOfSpecLightsSamplersAndFactorsAreRefused) {
   EXPECT_THAT(errorOf(edited),
               HasSubstr("edited.gltf: extensions.KHR_lights_punctual.lights[0]"
                         ".intensity: 1e+300; expected a number from 0 to 1000000"));
+  edited = lights;
+  edited["cameras"][0] = {{"type", "perspective"},
+                          {"perspective", {{"yfov", 1e-10}, {"znear", 0.25}}}};
+  EXPECT_THAT(errorOf(edited), AllOf(HasSubstr("edited.gltf: cameras[0]: fovy "),
+                                     HasSubstr("degrees is too narrow, expected 0.001 to 180")));
   edited = lights;
   edited["extensions"]["KHR_lights_punctual"]["lights"][1]["type"] = "laser";
   EXPECT_THAT(errorOf(edited), HasSubstr("lights[1].type: 'laser'; expected directional, point "

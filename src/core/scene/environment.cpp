@@ -176,14 +176,14 @@ ImageRgba readLinearImage(const std::filesystem::path& path) {
   std::vector<float> raw(size_t(spec.width) * spec.height * channels);
   source.getRows(0, spec.height, oiio::PixelType::Float, raw.data());
   ImageRgba image(uint32_t(spec.width), uint32_t(spec.height));
-  size_t nonFinite = 0;
+  size_t nanTexels = 0;
   std::string first;
   for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p) {
     const float* in = &raw[p * channels];
     float rgb[3] = {in[0], channels >= 3 ? in[1] : in[0], channels >= 3 ? in[2] : in[0]};
-    // NaN or infinite radiance has no value to light with: refused, not
-    // drawn as black or white.
-    if (!std::all_of(rgb, rgb + 3, [](float v) { return std::isfinite(v); }) && nonFinite++ == 0)
+    // NaN radiance has no value to light with: refused, not drawn black.
+    // +inf (a sun some half-float files store so) clamps to 65504 below.
+    if (std::any_of(rgb, rgb + 3, [](float v) { return std::isnan(v); }) && nanTexels++ == 0)
       first =
           std::to_string(p % size_t(spec.width)) + ", " + std::to_string(p / size_t(spec.width));
     for (int c = 0; c < 3; ++c) {
@@ -193,10 +193,9 @@ ImageRgba readLinearImage(const std::filesystem::path& path) {
     }
     image.pixels[p * 4 + 3] = 1.0f;
   }
-  if (nonFinite > 0)
-    throw InputError("image '" + path.string() + "': " + std::to_string(nonFinite) +
-                     " texel(s) NaN or infinite (the first at x, y = " + first +
-                     "); expected finite values");
+  if (nanTexels > 0)
+    throw InputError("image '" + path.string() + "': " + std::to_string(nanTexels) +
+                     " texel(s) NaN (the first at x, y = " + first + "); expected numbers");
   return image;
 }
 

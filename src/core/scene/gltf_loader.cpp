@@ -435,6 +435,10 @@ class NodeWalker {
       fail(source_, cameraWhere, "degenerate camera (znear/zfar, xmag/ymag or node transform)");
     if (camera.projection == Projection::Perspective && camera.near == 0.0f)
       fail(source_, cameraWhere, "znear is 0");
+    // The checks every camera gets (a field of view or window too narrow to
+    // draw), named here: later they would blame the command line's options.
+    if (std::optional<CameraProblem> problem = findCameraProblem(camera))
+      fail(source_, cameraWhere, problem->problem + ", expected " + problem->expected);
     return camera;
   }
 

@@ -56,12 +56,11 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
   texture.srgb = role == TextureRole::Color;
   texture.rgba8.resize(size_t(texture.width) * texture.height * 4);
   auto quantize = [](float value) {
-    return uint8_t(
-        std::lround(std::clamp(std::isfinite(value) ? value : 0.0f, 0.0f, 1.0f) * 255.0f));
+    return uint8_t(std::lround(std::clamp(std::isnan(value) ? 0.0f : value, 0.0f, 1.0f) * 255.0f));
   };
-  // A float file's NaN or infinite texels have no colour to give: refused,
-  // not drawn as black (what the clamp below would make of them).
-  size_t nonFinite = 0;
+  // A float file's NaN texels have no colour to give: refused, not drawn as
+  // black. Infinities saturate, as any value past 1 does (a sun stored as +inf).
+  size_t nanTexels = 0;
   std::string first;
   for (size_t p = 0; p < size_t(texture.width) * texture.height; ++p) {
     size_t x = p % texture.width;
@@ -72,17 +71,16 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
     const float* in = &row[x * channels];
     float rgba[4] = {in[0], channels >= 3 ? in[1] : in[0], channels >= 3 ? in[2] : in[0],
                      channels == 4 ? in[3] : (channels == 2 ? in[1] : 1.0f)};
-    if (!std::all_of(rgba, rgba + 4, [](float v) { return std::isfinite(v); }) && nonFinite++ == 0)
+    if (std::any_of(rgba, rgba + 4, [](float v) { return std::isnan(v); }) && nanTexels++ == 0)
       first = std::to_string(x) + ", " + std::to_string(p / texture.width);
     for (int c = 0; c < 4; ++c) {
       bool encode = c < 3 && linearLight && role == TextureRole::Color;
       texture.rgba8[p * 4 + c] = quantize(encode ? linearToSrgb(rgba[c]) : rgba[c]);
     }
   }
-  if (nonFinite > 0)
-    throw InputError("texture file '" + name + "': " + std::to_string(nonFinite) +
-                     " texel(s) NaN or infinite (the first at x, y = " + first +
-                     "); expected finite values");
+  if (nanTexels > 0)
+    throw InputError("texture file '" + name + "': " + std::to_string(nanTexels) +
+                     " texel(s) NaN (the first at x, y = " + first + "); expected numbers");
   return texture;
 }
 
