@@ -187,9 +187,11 @@ void OutputGroup::add(const std::filesystem::path& path,
 void OutputGroup::keep() {
   for (; renamed_ < staged_.size(); ++renamed_) {
     const Staged& file = staged_[renamed_];
-    if (::rename(file.staged.c_str(), file.target.c_str()) != 0)
+    if (::rename(file.staged.c_str(), file.target.c_str()) != 0) {
+      const int error = errno;  // before any allocation below can change it
       throw InputError("cannot write '" + file.target.string() +
-                       "': " + std::generic_category().message(errno));
+                       "': " + std::generic_category().message(error));
+    }
   }
   kept_ = true;
 }

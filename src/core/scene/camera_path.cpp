@@ -57,7 +57,8 @@ Camera readCamera(const nlohmann::json& value, const std::string& source, const 
     }
   }
   if (std::optional<CameraProblem> problem = findCameraProblem(camera))
-    fail(source, where + "." + problem->field, problem->problem + "; " + problem->expected);
+    fail(source, where + "." + problem->field,
+         problem->problem + "; expected " + problem->expected);
   return camera;
 }
 

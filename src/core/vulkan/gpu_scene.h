@@ -135,7 +135,8 @@ struct LightLayout {
 
 // Material::emissive as DrawConstants::object.w holds it: RGB9E5 (9-bit
 // mantissas, one 5-bit exponent, the packing of VK_FORMAT_E5B9G9R9_UFLOAT),
-// rounded to nearest. Each channel keeps 1/512 of the largest one; negative
+// rounded to nearest. Each channel keeps about 1/511 of the largest one (1/512
+// but where rounding carries into the next exponent); negative
 // and NaN channels become 0, values past 65408 that. unpackEmissive is the
 // shaders' drawEmissive() on the host.
 uint32_t packEmissive(glm::vec3 emissive);
