@@ -53,6 +53,26 @@ int main(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::CallForVersion& version) {
     return app.exit(version);
+  } catch (const CLI::ConversionError& error) {
+    // CLI11 says "Could not convert: --turntable = 2.5"; say what the option takes.
+    std::string what = error.what();
+    const std::string prefix = "Could not convert: ";
+    size_t equals = what.find(" = ");
+    if (!what.starts_with(prefix) || equals == std::string::npos) {
+      app.exit(error);
+      return 2;
+    }
+    std::string name = what.substr(prefix.size(), equals - prefix.size());
+    std::string value = what.substr(equals + 3);
+    std::string kind = "a value of its type";
+    for (const CLI::App* command : app.get_subcommands())
+      if (const CLI::Option* option = command->get_option_no_throw(name)) {
+        std::string type = option->get_type_name();
+        kind = type == "INT" || type == "UINT" ? "an integer" : type == "FLOAT" ? "a number" : type;
+      }
+    std::fprintf(stderr, "shadelab: error: %s '%s': expected %s (see --help)\n", name.c_str(),
+                 value.c_str(), kind.c_str());
+    return 2;  // usage error
   } catch (const CLI::ParseError& error) {
     app.exit(error);
     return 2;  // usage error
