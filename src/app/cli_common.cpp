@@ -1,7 +1,5 @@
 #include "app/cli_common.h"
 
-#include <sys/random.h>
-
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -161,14 +159,13 @@ void OutputGroup::add(const std::filesystem::path& path,
     madeFolder_ = true;
   }
   checkWritableFolder(path);
-  uint64_t random = 0;
-  if (getrandom(&random, sizeof random, 0) != sizeof random)
+  std::optional<std::string> random = randomHex();
+  if (!random)
     throw InputError("cannot write '" + path.string() + "': no random bytes for a staging name");
-  char suffix[24];
-  std::snprintf(suffix, sizeof suffix, "-staged-%016llx", static_cast<unsigned long long>(random));
   std::string name = ".";
   name += path.stem().string();
-  name += suffix;
+  name += "-staged-";
+  name += *random;
   name += path.extension().string();
   fs::path staged = path.parent_path() / name;
   staged_.push_back({path, staged});

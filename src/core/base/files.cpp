@@ -97,15 +97,14 @@ class TemporaryFile {
  private:
   void create() {
     for (int attempt = 0; attempt < 16 && descriptor_ < 0; ++attempt) {
-      uint64_t random = 0;
-      if (getrandom(&random, sizeof random, 0) != sizeof random)
-        fail("no random bytes for a temporary name");
-      char suffix[24];
-      std::snprintf(suffix, sizeof suffix, ".%016llx.tmp", static_cast<unsigned long long>(random));
+      std::optional<std::string> random = randomHex();
+      if (!random) fail("no random bytes for a temporary name");
       // Built by appending: GCC 12 misreports "." + std::string&& under -O2 (-Wrestrict).
       std::string name = ".";
       name += target_.filename().string();
-      name += suffix;
+      name += ".";
+      name += *random;
+      name += ".tmp";
       path_ = (target_.parent_path().empty() ? fs::path(".") : target_.parent_path()) / name;
       if (path_.native().size() >= kPathBytes) fail("path too long");
       registerForSignals();
@@ -164,6 +163,14 @@ void checkStat(const struct stat& info, const fs::path& path, std::string_view w
 }
 
 }  // namespace
+
+std::optional<std::string> randomHex() {
+  uint64_t random = 0;
+  if (getrandom(&random, sizeof random, 0) != sizeof random) return std::nullopt;
+  char digits[17];
+  std::snprintf(digits, sizeof digits, "%016llx", static_cast<unsigned long long>(random));
+  return std::string(digits);
+}
 
 void checkWritableFolder(const fs::path& path) {
   if (path.empty()) throw InputError("output path is empty");

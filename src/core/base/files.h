@@ -5,6 +5,7 @@
 // such as /dev/zero or a link to one gets a message instead of a hang.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -12,6 +13,9 @@ namespace shadelab {
 
 // Throws InputError unless the folder of `path` exists and is writable.
 void checkWritableFolder(const std::filesystem::path& path);
+// 16 hex digits from the kernel's random source (getrandom), for names no
+// one can predict; none when it gives no bytes.
+std::optional<std::string> randomHex();
 
 // Writes `bytes` to `path`: a temporary file created exclusively (O_EXCL,
 // random name ".NAME.XXXXXXXXXXXXXXXX.tmp") in the target's folder, every
