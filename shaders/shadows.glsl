@@ -78,12 +78,20 @@ vec4 shadowMapCoordinates(int i, vec3 position, vec3 normal) {
   float texel = point ? light.y * length(toLight) : light.y;
   vec3 offset = position + N * (texel * shadows.bias.z * sine);
   float layer = draw.object.z == 0 ? -1.0 : light.x;
+  // The slope term covers the one texel around the point that its own tap
+  // reads. Percentage-closer filtering compares every tap at the point's
+  // depth, and on a surface sloped by theta a tap r texels out lies up to
+  // r tan(theta) texels nearer the light: the term is (1 + r) times as
+  // large, r the kernel's reach (its corner taps, radius * sqrt(2)).
+  const float sqrt2 = 1.41421356;
+  float reach = shadowFilter == SHADOW_PCF5 ? 2.0 * sqrt2 : (shadowFilter == SHADOW_PCF3 ? sqrt2 : 0.0);
+  float slope = lookup.y * (1.0 + reach) * tangent;
   if (point) {
     vec3 v = mat3(frame.viewToWorld) * (offset - lightPosition);
-    return vec4(v * max(lookup.x - lookup.y * tangent, 1e-4), layer);
+    return vec4(v * max(lookup.x - slope, 1e-4), layer);
   }
   vec3 ndc = (shadows.eyeToLight[i] * vec4(offset, 1.0)).xyz;  // orthographic: w = 1
-  return vec4(ndc.xy * 0.5 + 0.5, ndc.z + lookup.x + lookup.y * tangent, layer);
+  return vec4(ndc.xy * 0.5 + 0.5, ndc.z + lookup.x + slope, layer);
 }
 #endif
 

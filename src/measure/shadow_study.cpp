@@ -93,7 +93,8 @@ ShadowErrors measureShadowErrors(Renderer& renderer, const Scene& scene, uint32_
     Pixel pixel = truth.pixels[p];
     float direct = luminance(unshadowed, p);
     if (pixel == Pixel::Ignored || direct <= 1e-4f) continue;
-    bool drawnShadowed = luminance(shadowed, p) < 0.5f * direct;
+    float drawn = luminance(shadowed, p);
+    bool drawnShadowed = drawn < 0.5f * direct;
     if (pixel != Pixel::Lit) {
       ++errors.shadowed;
       errors.leaked += drawnShadowed ? 0 : 1;
@@ -102,6 +103,7 @@ ShadowErrors measureShadowErrors(Renderer& renderer, const Scene& scene, uint32_
     if (pixel == Pixel::Lit) {
       ++errors.lit;
       errors.acne += drawnShadowed ? 1 : 0;
+      errors.dimmed += drawn < 0.98f * direct ? 1 : 0;
     } else {
       ++errors.contact;
       errors.peterPanning += drawnShadowed ? 0 : 1;
