@@ -108,6 +108,14 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
       ->capture_default_str()
       ->check(CLI::IsMember({"trimmed", "quad"}));
   command
+      ->add_option("--draw-order", options.drawOrder,
+                   "Opaque objects drawn nearest first, so the depth test spares the fragments "
+                   "they hide (sorted), or in the scene's order (scene: where two surfaces' "
+                   "depths tie, the one listed first wins; `render zfight --depth d16 "
+                   "--draw-order scene` shows z-fighting)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"sorted", "scene"}));
+  command
       ->add_option("--impostors", options.impostors,
                    "With --lod auto, each opaque untextured mesh's chain ends in an impostor: a "
                    "quad showing the mesh as captured from the nearest of 16x16 directions "
@@ -132,6 +140,7 @@ void applyLookOptions(const LookOptions& options, FrameSettings& settings) {
   settings.impostorCells = options.impostors != "off" ? kImpostorCells : 0;
   settings.impostorBlend = options.impostors == "blend";
   settings.trimBillboards = options.billboardOutline == "trimmed";
+  settings.frontToBack = options.drawOrder == "sorted";
 }
 
 float parseTessellationFactor(const std::string& text) {

@@ -41,6 +41,7 @@ struct LookOptions {
   std::string instancing = "on";             // --instancing on|off
   std::string impostors = "on";              // --impostors on|blend|off
   std::string billboardOutline = "trimmed";  // --billboard-outline trimmed|quad
+  std::string drawOrder = "sorted";          // --draw-order sorted|scene
 };
 
 void addLookOptions(CLI::App* command, LookOptions& options);

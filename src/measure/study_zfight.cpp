@@ -74,6 +74,7 @@ StudyResult runZFightStudy(const StudyOptions& options, const StudyServices& ser
   // What D16 at near 1 looks like nearest and farthest (farther plane drawn first).
   RenderSettings settings{options.width, options.height, ShadingModel::Unlit};
   settings.depth = DepthMode::D16;
+  settings.frontToBack = false;  // sorted, the nearer plane would be drawn first and win every tie
   for (Projection projection : {Projection::Perspective, Projection::Orthographic})
     for (float scale : {kDistanceScales[0], kDistanceScales[std::size(kDistanceScales) - 1]}) {
       char name[96];

@@ -81,9 +81,10 @@ struct FrameSettings {
   // shadow-near turns it off, to measure what the clamp saves.
   bool shadowDepthClamp = true;
   // Opaque draws front to back (visibleDraws), so early depth testing skips
-  // the fragments they hide; off keeps the scene's order. Only the z-fight
-  // measurement turns it off: it draws its two planes in both orders, and
-  // sorted the nearer one would always come first.
+  // the fragments they hide; off keeps the scene's order (`--draw-order
+  // scene`). The z-fight study turns it off: it draws its two planes in both
+  // orders, and sorted the nearer one would always come first and win every
+  // depth tie.
   bool frontToBack = true;
   // Materials compiled into the forward pipelines, a pipeline per material,
   // when the scene has at most kMaxMaterialPipelines (ForwardFrame says why);
