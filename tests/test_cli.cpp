@@ -707,6 +707,54 @@ TEST_F(Cli, RenderWithEachDepthMode) {
   }
 }
 
+// Sorted, the nearer (red) plane of `zfight` is drawn first and wins every
+// depth tie, so D16's z-fighting does not show; `--draw-order scene` draws
+// the farther (blue) plane first, as the scene lists it, and it shows.
+// The share of the `zfight` planes' pixels in a PNG where the farther
+// (blue) plane shows.
+double farPlaneShare(const std::string& png) {
+  shadelab::ImageU8 image = shadelab::readImageU8(png);
+  size_t blue = 0, covered = 0;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) {
+      glm::u8vec4 p = image.at(x, y);
+      if (p.r + p.b < 128) continue;  // background
+      ++covered;
+      blue += p.b > p.r;
+    }
+  EXPECT_GT(covered, image.width * image.height / 4) << png;
+  return double(blue) / double(std::max<size_t>(covered, 1));
+}
+
+TEST_F(Cli, DrawOrderSceneShowsZFighting) {
+  auto farShare = [&](const std::string& options) {
+    std::string png = out("z.png");
+    CommandResult r = run("render zfight --size 96x54 -o " + png + " " + options);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return farPlaneShare(png);
+  };
+  EXPECT_GT(farShare("--depth d16 --draw-order scene"), 0.5);
+  EXPECT_LT(farShare("--depth d16"), 0.01);
+  EXPECT_LT(farShare("--depth reversed --draw-order scene"), 0.01);
+  CommandResult bad = run("render zfight -o " + out("z.png") + " --draw-order random");
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+}
+
+// The device memory a render reports holds its targets: 4x MSAA's are larger.
+TEST_F(Cli, DeviceMemoryIncludesTheRenderTargets) {
+  auto memory = [&](const std::string& msaa) {
+    CommandResult r =
+        run("render --json --shadows off --size 320x180 --msaa " + msaa + " -o " + out("m.png"));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    std::smatch match;
+    EXPECT_TRUE(std::regex_search(r.output, match, std::regex("\"device_memory_bytes\":([0-9]+)")))
+        << r.output;
+    return match.empty() ? 0.0 : std::stod(match[1]);
+  };
+  // 320x180: an RGBA16F 4x target and its resolve are ~2.3 MB more per frame in flight.
+  EXPECT_GT(memory("4") - memory("1"), 2.0e6);
+}
+
 // Splits CSV text into rows of cells (no quoting: bench output has none).
 std::vector<std::vector<std::string>> csvRows(const std::string& text) {
   std::vector<std::vector<std::string>> rows;
@@ -764,6 +812,10 @@ TEST_F(Cli, StudyZfightWritesTablesCsvsChartsAndImages) {
     expectDrawnChart(chart);
   }
   EXPECT_EQ(pngSize(out("z/d16_perspective_distance29.png")), std::make_pair(160u, 90u));
+  // The images show what the table counts: D16 far away loses most of the
+  // nearer plane, close by none of it (drawn sorted, they showed none).
+  EXPECT_GT(farPlaneShare(out("z/d16_perspective_distance466.png")), 0.5);
+  EXPECT_LT(farPlaneShare(out("z/d16_perspective_distance29.png")), 0.01);
   EXPECT_NE(r.output.find("reversed"), std::string::npos) << "prints the table";
 }
 
@@ -933,8 +985,8 @@ TEST_F(Cli, BenchWritesCsvColumnsAndCharts) {
   for (size_t i = 1; i < rows.size(); ++i) {
     ASSERT_EQ(rows[i].size(), kBenchColumns.size());
     EXPECT_EQ(rows[i][6], "material");
-    EXPECT_EQ(rows[i][7], "off");
-    EXPECT_EQ(rows[i][8], "0");
+    EXPECT_EQ(rows[i][7], "hard") << "bench draws the shadows render draws";
+    EXPECT_EQ(rows[i][8], "768");
     EXPECT_GT(std::stod(rows[i][15]), 0.0) << "device memory";
     EXPECT_GE(std::stod(rows[i][18]), 0.0) << "rmse";
     EXPECT_GT(std::stod(rows[i][19]), 10.0) << "psnr";

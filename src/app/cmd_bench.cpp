@@ -36,7 +36,7 @@ struct BenchCommandOptions {
   std::string reference = "trace";
   std::string metric = "flip";
   std::string filters = "material";
-  std::string shadows = "off";
+  std::string shadows{nameOf(kShadowMethodNames, kDefaultShadowMethod)};  // as render draws
   std::string lights = "scene";
   std::string lod = "off";
   std::string shadowSizes = std::to_string(kDefaultShadowMapSize);

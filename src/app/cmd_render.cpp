@@ -101,6 +101,13 @@ std::vector<QualityCandidate> readBenchCandidates(const std::string& folder, con
                              msaa);
 }
 
+// A candidate's name with its shadows said even when off (benchPointName
+// leaves "off" out): --quality weighs shadows too, and a user who did not
+// ask for them has to see that the choice dropped them.
+std::string candidateName(const BenchPoint& point) {
+  return benchPointName(point) + (point.shadows == ShadowMethod::Off ? " no shadows" : "");
+}
+
 // Prints every candidate, cheapest first, and why the chosen one won;
 // throws InputError when none meets the bound.
 BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const ErrorMetric& metric,
@@ -111,11 +118,11 @@ BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const E
   const char* relation = metric.lowerIsBetter ? "<=" : ">=";
   std::fprintf(out, "quality: %s %s %g, from %s\n", metric.name.c_str(), relation, bound,
                source.c_str());
-  std::fprintf(out, "  %-30s %10s %10s %9s\n", "setting", "triangles", "device ms",
+  std::fprintf(out, "  %-34s %10s %10s %9s\n", "setting", "triangles", "device ms",
                metric.name.c_str());
   for (size_t i = 0; i < candidates.size(); ++i) {
     const QualityCandidate& c = candidates[i];
-    std::fprintf(out, "  %-30s %10llu %10.3f %9.3f %s\n", benchPointName(c.point).c_str(),
+    std::fprintf(out, "  %-34s %10llu %10.3f %9.3f %s\n", candidateName(c.point).c_str(),
                  static_cast<unsigned long long>(c.triangles), c.costMs, c.error,
                  chosen == i                    ? "<- chosen"
                  : metric.meets(c.error, bound) ? "meets"
@@ -130,14 +137,14 @@ BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const E
     std::snprintf(message, sizeof message,
                   "--quality %g: no setting reaches %s %s %g; the best is %s with %s %.3f", bound,
                   metric.name.c_str(), relation, bound,
-                  benchPointName(candidates[best].point).c_str(), metric.name.c_str(),
+                  candidateName(candidates[best].point).c_str(), metric.name.c_str(),
                   candidates[best].error);
     throw InputError(message);
   }
   const QualityCandidate& c = candidates[*chosen];
   std::fprintf(out,
                "chose %s: the cheapest setting with %s %s %g (%.3f ms device median, %s %.3f)\n",
-               benchPointName(c.point).c_str(), metric.name.c_str(), relation, bound, c.costMs,
+               candidateName(c.point).c_str(), metric.name.c_str(), relation, bound, c.costMs,
                metric.name.c_str(), c.error);
   // Costs within a tenth of each other are within this machine's timing
   // noise: say so, since another run may rank them the other way.
@@ -147,7 +154,7 @@ BenchPoint reportQualityChoice(std::vector<QualityCandidate> candidates, const E
       std::fprintf(out,
                    "note: %s costs within 10%% (%.3f ms), inside timing noise; pass --bench DIR "
                    "to choose from fixed measurements\n",
-                   benchPointName(candidates[i].point).c_str(), candidates[i].costMs);
+                   candidateName(candidates[i].point).c_str(), candidates[i].costMs);
   return c.point;
 }
 

@@ -659,7 +659,6 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
 
   RenderResult result;
-  result.stats.deviceMemoryBytes = deviceMemoryInUse();
   lastCompletion_ = nowMs();
   for (uint32_t i = 0; i < settings.frames; ++i) {
     waitForFrame(result.stats);
@@ -669,6 +668,9 @@ RenderResult Renderer::renderToImage(const Scene& scene, const RenderSettings& s
     submitFrame();
   }
   finishFrames(result.stats);
+  // Sampled after the frames: the targets and shadow maps are made (or
+  // remade for these settings) when the first frame is recorded.
+  result.stats.deviceMemoryBytes = deviceMemoryInUse();
   if (settings.srgb8)
     result.srgb8 = encodeSrgb8FromHalf(static_cast<const uint16_t*>(readback.mapped()),
                                        settings.width, settings.height);
@@ -687,7 +689,6 @@ RenderStats Renderer::renderSequence(const Scene& scene, const FrameSettings& se
   Buffer readback(context_, VkDeviceSize(settings.width) * settings.height * 8,
                   VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
   RenderStats stats;
-  stats.deviceMemoryBytes = deviceMemoryInUse();
   Scene moving = scene;  // only its camera changes
   lastCompletion_ = nowMs();
   for (uint32_t i = 0; i < cameras.size(); ++i) {
@@ -699,6 +700,7 @@ RenderStats Renderer::renderSequence(const Scene& scene, const FrameSettings& se
     submitFrame();
     // One readback buffer: this frame is read before the next is recorded.
     finishFrames(stats);
+    stats.deviceMemoryBytes = std::max(stats.deviceMemoryBytes, deviceMemoryInUse());
     onFrame(i, unpackHalfImage(readback.mapped(), settings.width, settings.height));
   }
   return stats;
