@@ -159,6 +159,24 @@ TEST_F(Viewer, PrintedCameraRendersTheSameViewHeadless) {
   EXPECT_FALSE(matchesImage(headless(builtinScene("default"), ShadingModel::Phong), shot));
 }
 
+// Keys that are a script's last steps, or come right before `quit`, are
+// still handled: V prints the camera though no frame follows it. (They were
+// dropped with the script's end; the summary then read "median of the last
+// 0: 0.000 ms" instead of saying nothing was timed.)
+TEST_F(Viewer, KeysJustBeforeTheScriptEndsAreHandled) {
+  for (const char* script : {"frames 2\nkey V\nquit\n", "frames 2\nkey V\n"}) {
+    CommandResult r = view(script);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::regex_search(r.output, std::regex("camera: --eye [^\n]*\n")))
+        << script << r.output;
+    EXPECT_EQ(r.output.find("median of the last 0"), std::string::npos) << r.output;
+  }
+  // Twin: a script without the key prints no camera.
+  CommandResult r = view("frames 2\nquit\n");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("camera: --eye"), std::string::npos) << r.output;
+}
+
 TEST_F(Viewer, ZeroKeyPutsTheCameraBack) {
   CommandResult r =
       view("key O\ndrag 100 100 160 80\nscroll 3\nkey 0\nframes 2\nscreenshot back.png\n");

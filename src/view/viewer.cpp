@@ -119,13 +119,16 @@ void Viewer::say(const std::string& message, bool error) {
 
 void Viewer::run() {
   while (!quit_) {
-    if (options_.script && !advanceScript()) break;
+    // A script that ends (or quits) right after its last keys still has
+    // them handled: the keys' own effects (V's camera line, a setting) take
+    // place, though no frame is drawn after them.
+    bool scriptGoesOn = !options_.script || advanceScript();
     if (!options_.script && minimized_)
       window_.waitEvents(0.1);  // nothing to draw: sleep until something happens
     else
       window_.pollEvents();
     handleEvents();
-    if (window_.closeRequested()) break;
+    if (!scriptGoesOn || window_.closeRequested()) break;
     glm::ivec2 size = window_.framebufferSize();
     bool wasMinimized = minimized_;
     minimized_ = minimizedByScript_ || window_.iconified() || size.x == 0 || size.y == 0;
@@ -151,11 +154,16 @@ void Viewer::run() {
   std::vector<double> device(deviceMs_.begin(), deviceMs_.end());
   std::vector<double> frameDevice(frameDeviceMs_.begin(), frameDeviceMs_.end());
   std::vector<double> wall(wallMs_.begin(), wallMs_.end());
-  std::printf(
-      "view: %llu frames; median of the last %zu: %.3f ms device (scene), %.3f ms device "
-      "(frame), %.3f ms wall\n",
-      static_cast<unsigned long long>(framesDrawn_), device.size(), median(device),
-      median(frameDevice), median(wall));
+  if (device.empty())
+    std::printf(
+        "view: %llu frames; none timed (a frame's times are read when its slot is reused)\n",
+        static_cast<unsigned long long>(framesDrawn_));
+  else
+    std::printf(
+        "view: %llu frames; median of the last %zu: %.3f ms device (scene), %.3f ms device "
+        "(frame), %.3f ms wall\n",
+        static_cast<unsigned long long>(framesDrawn_), device.size(), median(device),
+        median(frameDevice), median(wall));
   std::printf("view: swapchain built %u times (%u out of date, %u suboptimal)\n", swapchainBuilds_,
               outOfDate_, suboptimal_);
   std::printf("view: %u scene uploads (geometry, textures, environment)\n",
