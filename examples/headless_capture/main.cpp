@@ -1,8 +1,8 @@
 // headless_capture: what a test of another project does with shadelab.
 // Opens a Vulkan device (lavapipe in CI), loads a scene (a built-in name or
 // a .json/.gltf/.glb file), renders it headless with Phong shading, writes the
-// image, then renders Gouraud from the same upload and measures it against
-// the Phong image with FLIP.
+// image, then renders Gouraud (another upload: renderToImage uploads per call) and measures it
+// against the Phong image with FLIP.
 //
 //   headless_capture OUTPUT.png [SCENE] [--size WxH] [--validate]
 //

@@ -323,8 +323,9 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
   command->add_option("scene", options->scene,
                       "Built-in scene name or scene file (default: the built-in default scene)");
   command
-      ->add_option("-o,--output", options->output,
-                   "Folder for results.csv and the charts (created if needed)")
+      ->add_option(
+          "-o,--output", options->output,
+          "Folder for results.csv and the charts (created if needed, in a folder that exists)")
       ->required();
   command
       ->add_option("--size", options->size,

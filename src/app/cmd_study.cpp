@@ -141,8 +141,9 @@ CommandRunner addStudyCommand(CLI::App& app, const GlobalOptions& global) {
       "study", "Measure one seed claim or failure mode into DIR: images, CSV and a chart (" +
                    names + "); without NAME, list the studies");
   command->add_option("name", options->name, "The study: " + names);
-  command->add_option("-o,--output", options->output,
-                      "Folder for the study's images, CSV and chart (created if needed)");
+  command->add_option(
+      "-o,--output", options->output,
+      "Folder for the study's images, CSV and chart (created if needed, in a folder that exists)");
   command->add_option("--size", options->size,
                       "Image size WIDTHxHEIGHT (default: the study's own, e.g. 640x360)");
   options->json.add(command);

@@ -116,7 +116,8 @@ CommandRunner addViewCommand(CLI::App& app, const GlobalOptions& global) {
                     "present and to that frame's end on the device");
   command->add_option("--script", options->script,
                       "Run the steps of FILE (key, frames, drag, scroll, resize, minimize, "
-                      "restore, screenshot, memory, quit) instead of waiting for input");
+                      "restore, screenshot, memory, wait-reference, camera-path, quit) instead of "
+                      "waiting for input");
   return [options, &global] { return runView(*options, global); };
 }
 
