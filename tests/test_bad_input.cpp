@@ -565,6 +565,14 @@ const std::vector<BadCase>& badCases() {
        kError + "{dir}/s.json: objects[0].instances.grid.count: 8589934592 instances is above the "
                 "limit"},
       {Group::Json,
+       "grid spacing that places copies past the float range",
+       {{"s.json",
+         R"({"objects": [{"shape": "sphere", "instances": {"grid": {"count": [100, 1, 1], "spacing": 1e37}}}]})"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: objects[0].instances: copy 1 of 100 lands outside the float range, "
+                "expected copies whose transforms (with the object's own) stay finite"},
+      {Group::Json,
        "scatter on a rectangle with no area",
        {{"s.json",
          R"({"materials": {"tree": {"diffuse_map": {"procedural": "tree", "size": 8}}}, "objects": [{"shape": "billboard", "material": "tree", "instances": {"scatter": {"count": 10, "rectangle": [0, 5]}}}]})"}},

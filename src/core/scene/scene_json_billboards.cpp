@@ -139,7 +139,18 @@ std::vector<glm::mat4> parseInstances(const Field& field, const glm::mat4& world
   if (auto f = field.optional("list")) local = listInstances(*f);
   if (auto f = field.optional("grid")) local = gridInstances(*f);
   if (auto f = field.optional("scatter")) local = scatterInstances(*f);
-  for (glm::mat4& matrix : local) matrix = world * matrix;
+  for (size_t i = 0; i < local.size(); ++i) {
+    glm::mat4& matrix = local[i];
+    matrix = world * matrix;
+    // A grid's spacing or a scatter's rectangle can place copies past the
+    // float range, where one transform alone would have been refused.
+    for (int column = 0; column < 4; ++column)
+      for (int row = 0; row < 4; ++row)
+        if (!std::isfinite(matrix[column][row]))
+          field.fail("copy " + std::to_string(i + 1) + " of " + std::to_string(local.size()) +
+                         " lands outside the float range",
+                     "copies whose transforms (with the object's own) stay finite");
+  }
   return local;
 }
 
