@@ -3,6 +3,9 @@
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/base/image.h"
 #include "core/vulkan/vk_check.h"
 
@@ -143,6 +146,59 @@ void Overlay::setTargets(const std::vector<VkImageView>& views, VkExtent2D exten
   }
 }
 
+// The help panel fills the window's width and takes as many columns (up to
+// four) as its lines need to fit its height, each line wrapped to its
+// column; lines are laid out down the first column, then the next. Leaves
+// the panel open for the caller to add to and end.
+void Overlay::drawHelp(const std::vector<std::string>& lines, int flags) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = std::max(float(extent_.width) - 16.0f, 64.0f);
+  const float height =
+      std::max(float(extent_.height) - 16.0f - 2.0f * style.WindowPadding.y, 16.0f);
+  const float lineHeight = ImGui::GetTextLineHeightWithSpacing();
+  auto columnHeights = [&](int columns, size_t rows) {
+    float cellWidth =
+        (width - 2.0f * style.WindowPadding.x) / float(columns) - 2.0f * style.CellPadding.x;
+    std::vector<float> heights(size_t(columns), 0.0f);
+    for (size_t i = 0; i < lines.size(); ++i) {
+      float textWidth = ImGui::CalcTextSize(lines[i].c_str()).x;
+      float wrapped = std::max(1.0f, std::ceil(textWidth / std::max(cellWidth, 1.0f)));
+      heights[i / rows] += wrapped * lineHeight;
+    }
+    return *std::max_element(heights.begin(), heights.end());
+  };
+  int columns = 1;
+  size_t rows = lines.size();
+  for (; columns < 4; ++columns) {
+    rows = (lines.size() + size_t(columns) - 1) / size_t(columns);
+    if (columnHeights(columns, rows) <= height) break;
+  }
+  rows = (lines.size() + size_t(columns) - 1) / size_t(columns);
+  float panelWidth = width;
+  if (columns == 1) {  // one column: as wide as its longest line
+    float longest = 0.0f;
+    for (const std::string& line : lines)
+      longest = std::max(longest, ImGui::CalcTextSize(line.c_str()).x);
+    panelWidth =
+        std::min(width, longest + 2.0f * (style.WindowPadding.x + style.CellPadding.x) + 1.0f);
+  }
+  ImGui::SetNextWindowPos(ImVec2(8, 8));
+  ImGui::SetNextWindowSize(ImVec2(panelWidth, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::Begin("help", nullptr, flags & ~ImGuiWindowFlags_AlwaysAutoResize);
+  if (ImGui::BeginTable("keys", columns, ImGuiTableFlags_SizingStretchSame)) {
+    for (size_t row = 0; row < rows; ++row) {
+      ImGui::TableNextRow();
+      for (int column = 0; column < columns; ++column) {
+        ImGui::TableNextColumn();
+        size_t i = size_t(column) * rows + row;
+        if (i < lines.size()) ImGui::TextWrapped("%s", lines[i].c_str());
+      }
+    }
+    ImGui::EndTable();
+  }
+}
+
 void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText& text,
                      float deltaSeconds) {
   ImGuiIO& io = ImGui::GetIO();
@@ -153,11 +209,8 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
-  ImGui::SetNextWindowPos(ImVec2(8, 8));
-  ImGui::SetNextWindowBgAlpha(0.6f);
-  ImGui::Begin("status", nullptr, flags);
-  for (const std::string& line : text.status) ImGui::TextUnformatted(line.c_str());
-  if (!text.message.empty()) {
+  auto drawMessage = [&] {
+    if (text.message.empty()) return;
     ImVec4 colour =
         text.messageIsError ? ImVec4(1.0f, 0.25f, 0.2f, 1.0f) : ImVec4(1.0f, 0.85f, 0.3f, 1.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, srgbTarget_ ? decoded(colour) : colour);
@@ -165,8 +218,19 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
     ImGui::TextUnformatted(text.message.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
+  };
+  if (text.help.empty()) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin("status", nullptr, flags);
+    for (const std::string& line : text.status) ImGui::TextUnformatted(line.c_str());
+    drawMessage();
+    ImGui::End();
+  } else {
+    drawHelp(text.help, flags);  // in the status panel's place, so the two never overlap
+    drawMessage();
+    ImGui::End();
   }
-  ImGui::End();
   for (size_t i = 0; i < text.columnLabels.size(); ++i) {
     const OverlayText::Label& label = text.columnLabels[i];
     ImGui::SetNextWindowPos(ImVec2(label.left + 8, float(extent_.height) - 8), ImGuiCond_Always,
@@ -174,13 +238,6 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
     ImGui::SetNextWindowBgAlpha(0.6f);
     ImGui::Begin(("column " + std::to_string(i)).c_str(), nullptr, flags);
     ImGui::TextUnformatted(label.text.c_str());
-    ImGui::End();
-  }
-  if (!text.help.empty()) {
-    ImGui::SetNextWindowPos(ImVec2(float(extent_.width) - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::Begin("help", nullptr, flags);
-    for (const std::string& line : text.help) ImGui::TextUnformatted(line.c_str());
     ImGui::End();
   }
   ImGui::Render();

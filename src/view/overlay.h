@@ -14,7 +14,7 @@ struct OverlayText {
   std::vector<std::string> status;  // top-left panel, one line each
   std::string message;              // the last action's result or error, if any
   bool messageIsError = false;
-  std::vector<std::string> help;  // shown in its own panel when not empty
+  std::vector<std::string> help;  // when not empty, shown instead of the status panel
   struct Label {
     float left = 0.0f;  // pixels from the window's left edge
     std::string text;
@@ -45,6 +45,7 @@ class Overlay {
   VkExtent2D extent_{0, 0};
   bool srgbTarget_ = false;
   void destroyFramebuffers();
+  void drawHelp(const std::vector<std::string>& lines, int flags) const;
 };
 
 }  // namespace shadelab

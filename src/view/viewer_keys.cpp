@@ -56,7 +56,7 @@ const std::vector<KeyBinding>& Viewer::keyBindings() {
       modelKey('2', ShadingModel::Gouraud),
       modelKey('3', ShadingModel::Phong),
       modelKey('4', ShadingModel::BlinnPhong),
-      {'0', "0", "camera back to the scene's",
+      {'0', "0", "camera back to the scene's own",
        [](Viewer& v) {
          v.camera_ = CameraController(v.sceneCamera_);
          v.say("camera reset");
