@@ -170,7 +170,8 @@ struct ShadowData {
   // (shadows.glsl, shadowMapCoordinates): moving towards the light by
   // bias.x + bias.y tan(theta) texels is, for a directional light, map
   // depth + x + y tan; for a point light, the vector from the light scaled
-  // by x - y tan. zw unused.
+  // by x - y tan. z: a directional map's depth per texel (what the PCF
+  // kernels' receiver-plane gradient is held to). w unused.
   vec4 lookup[MAX_LIGHTS];
 };
 

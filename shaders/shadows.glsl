@@ -78,14 +78,7 @@ vec4 shadowMapCoordinates(int i, vec3 position, vec3 normal) {
   float texel = point ? light.y * length(toLight) : light.y;
   vec3 offset = position + N * (texel * shadows.bias.z * sine);
   float layer = draw.object.z == 0 ? -1.0 : light.x;
-  // The slope term covers the one texel around the point that its own tap
-  // reads. Percentage-closer filtering compares every tap at the point's
-  // depth, and on a surface sloped by theta a tap r texels out lies up to
-  // r tan(theta) texels nearer the light: the term is (1 + r) times as
-  // large, r the kernel's reach (its corner taps, radius * sqrt(2)).
-  const float sqrt2 = 1.41421356;
-  float reach = shadowFilter == SHADOW_PCF5 ? 2.0 * sqrt2 : (shadowFilter == SHADOW_PCF3 ? sqrt2 : 0.0);
-  float slope = lookup.y * (1.0 + reach) * tangent;
+  float slope = lookup.y * tangent;
   if (point) {
     vec3 v = mat3(frame.viewToWorld) * (offset - lightPosition);
     return vec4(v * max(lookup.x - slope, 1e-4), layer);
@@ -109,6 +102,7 @@ const bool shadowsLookedUp = shadowFilter != SHADOW_OFF;
 // frame, measured: docs/PERFORMANCE.md).
 float shadowLookup(int i, vec4 coordinates) {
   vec3 uvDepth;
+  float uvDepthMajor = 1.0;  // point lights: the distance along the face's axis
   float layer = coordinates.w;  // interpolated: a layer number to within rounding
   bool inside = layer > -0.5;
   if (i < pointLightCount) {
@@ -128,6 +122,7 @@ float shadowLookup(int i, vec4 coordinates) {
     float up = yMajor ? v.z : v.y;
     vec4 cube = shadows.cube[i];
     float inverseMajor = 1.0 / major;
+    uvDepthMajor = major;
     float face = 0.5 * cube.z * inverseMajor;  // cot(half angle) / 2 / major
     uvDepth = vec3(0.5 + face * right, 0.5 - face * up, cube.x - cube.y * inverseMajor);
     layer += float((xMajor ? 0 : (yMajor ? 2 : 4)) + (positive ? 0 : 1));
@@ -143,10 +138,33 @@ float shadowLookup(int i, vec4 coordinates) {
     lit = texture(shadowMap, vec4(uvDepth.xy, layer, uvDepth.z));
   } else {
     float step = shadows.lights[i].z;  // one texel
+    // Receiver-plane depth: a tap `offset` away compares the depth the
+    // surface has there (its plane through this point), not this point's
+    // own, or on a surface sloped towards the light the outer taps find it
+    // in front of itself and lit floor is dimmed in rings. The plane's depth
+    // gradient in the map follows from the screen derivatives of the map
+    // coordinates (one triangle's, exact on planes). Where they say nothing
+    // (the quad straddles two cube faces, or a map texel is seen edge-on)
+    // the taps keep this point's depth; at grazing angles the gradient is
+    // held to kMaxSlopeTangent texels of depth per texel, as the slope bias is.
+    vec3 alongX = dFdx(uvDepth), alongY = dFdy(uvDepth);
+    float determinant = alongX.x * alongY.y - alongX.y * alongY.x;
+    vec2 gradient = vec2(alongY.y * alongX.z - alongX.y * alongY.z,
+                         alongX.x * alongY.z - alongY.x * alongX.z) /
+                    determinant;
+    float depthPerTexel = i < pointLightCount
+                              ? shadows.cube[i].y * shadows.lights[i].y / max(abs(uvDepthMajor), 1e-30)
+                              : shadows.lookup[i].z;
+    float limit = 100.0 * abs(depthPerTexel) / step;  // 100 texels of depth per texel, per unit of uv
+    float size = length(gradient);
+    bool known = abs(determinant) > 0.0 && size < 1e30 && abs(dFdx(layer)) + abs(dFdy(layer)) < 0.5;
+    gradient = known ? gradient * min(1.0, limit / max(size, 1e-30)) : vec2(0.0);
     lit = 0.0;
     for (int y = -radius; y <= radius; ++y)
-      for (int x = -radius; x <= radius; ++x)
-        lit += texture(shadowMap, vec4(uvDepth.xy + vec2(x, y) * step, layer, uvDepth.z));
+      for (int x = -radius; x <= radius; ++x) {
+        vec2 offset = vec2(x, y) * step;
+        lit += texture(shadowMap, vec4(uvDepth.xy + offset, layer, uvDepth.z + dot(gradient, offset)));
+      }
     lit /= float((2 * radius + 1) * (2 * radius + 1));
   }
   return inside ? lit : 1.0;
