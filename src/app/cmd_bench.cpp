@@ -366,10 +366,11 @@ CommandRunner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
                    "against off's (mean FLIP) and charted in lod.png")
       ->capture_default_str();
   command
-      ->add_option("--reference", options->reference,
-                   "What each setting's error is measured against: trace (the CPU Whitted ray "
-                   "tracer, 4 spp), raster (Phong, 4x tessellation, 4x MSAA) or none (time "
-                   "only; the charts of error are then empty)")
+      ->add_option(
+          "--reference", options->reference,
+          "What each setting's error is measured against: trace (the CPU Whitted ray "
+          "tracer, 4 spp), raster (Phong, 4x tessellation, 4x MSAA, hard shadows) or none (time "
+          "only; the charts of error are then empty)")
       ->capture_default_str();
   command
       ->add_option("--metric", options->metric,

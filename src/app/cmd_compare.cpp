@@ -204,10 +204,11 @@ ComparePlan planCompare(const CompareOptions& options, const GlobalOptions& glob
                      "': expected another column to measure against it");
   checkSamplesPerPixel(options.samplesPerPixel, "--spp");
   plan.reference = findReference(options.reference, "--reference");
+  bool referenceShadows = parseNamed(kOnOffNames, options.referenceShadows, "--reference-shadows");
   if (plan.reference.name == "trace")
-    plan.reference =
-        traceReference(options.samplesPerPixel,
-                       parseNamed(kOnOffNames, options.referenceShadows, "--reference-shadows"));
+    plan.reference = traceReference(options.samplesPerPixel, referenceShadows);
+  else if (plan.reference.name == "raster")
+    plan.reference = rasterReference(referenceShadows);
   plan.sheetPath = options.output;
   if (plan.sheetPath.extension() != ".png")
     throw InputError("output '" + options.output + "': expected a .png file name");
@@ -412,10 +413,11 @@ CommandRunner addCompareCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str()
       ->check(CLI::Range(1u, 256u));
   command
-      ->add_option("--reference-shadows", options->referenceShadows,
-                   namedHelp("Shadow rays in the traced reference (off, with --shadows off: "
-                             "shading alone)",
-                             kOnOffNames))
+      ->add_option(
+          "--reference-shadows", options->referenceShadows,
+          namedHelp("Shadows in the reference: the tracer's shadow rays, or the raster "
+                    "reference's hard shadow maps (off, with --shadows off: shading alone)",
+                    kOnOffNames))
       ->capture_default_str();
   options->shadows.add(command);
   options->json.add(command);

@@ -406,7 +406,7 @@ CommandRunner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->add_option(
           "--reference", options->reference,
           "What --quality measures against: trace (the CPU Whitted ray tracer, 4 spp) or raster "
-          "(Phong, 4x tessellation, 4x MSAA)")
+          "(Phong, 4x tessellation, 4x MSAA, hard shadows)")
       ->capture_default_str()
       ->needs(quality);
   command

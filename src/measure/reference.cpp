@@ -9,19 +9,29 @@ namespace {
 const std::vector<Reference>& references() {
   static const std::vector<Reference> table = {
       traceReference(4, true),
-      {"raster", "Phong, 4x tessellation, 4x MSAA",
-       [](Renderer& renderer, const Scene& scene, uint32_t width, uint32_t height) {
-         Scene fine = scene;
-         fine.retessellate(4.0f);
-         RenderSettings settings{width, height, ShadingModel::Phong};
-         settings.msaaSamples = 4;
-         return renderer.renderToImage(fine, settings).image;
-       }},
+      rasterReference(true),
   };
   return table;
 }
 
 }  // namespace
+
+Reference rasterReference(bool shadows) {
+  return {"raster",
+          std::string("Phong, 4x tessellation, 4x MSAA") +
+              (shadows ? ", hard shadows" : ", no shadows"),
+          [shadows](Renderer& renderer, const Scene& scene, uint32_t width, uint32_t height) {
+            Scene fine = scene;
+            fine.retessellate(4.0f);
+            RenderSettings settings{width, height, ShadingModel::Phong};
+            settings.msaaSamples = 4;
+            // The shadows render draws, as the traced reference has its own:
+            // against a shadowless reference a setting's error would be mostly
+            // its shadows.
+            if (shadows) settings.shadows = kDefaultShadowMethod;
+            return renderer.renderToImage(fine, settings).image;
+          }};
+}
 
 Reference traceReference(uint32_t samplesPerPixel, bool shadows) {
   return {

@@ -28,5 +28,8 @@ const Reference& findReference(const std::string& name, const std::string& optio
 // The ray tracer as a reference with other settings than the table's `trace`
 // (samplesPerPixel must be a square; see checkSamplesPerPixel).
 Reference traceReference(uint32_t samplesPerPixel, bool shadows);
+// Phong at 4x tessellation with 4x MSAA, with render's default shadow maps
+// (the table's `raster`) or none.
+Reference rasterReference(bool shadows);
 
 }  // namespace shadelab
