@@ -707,9 +707,21 @@ TEST_F(Cli, RenderWithEachDepthMode) {
   }
 }
 
-// Sorted, the nearer (red) plane of `zfight` is drawn first and wins every
-// depth tie, so D16's z-fighting does not show; `--draw-order scene` draws
-// the farther (blue) plane first, as the scene lists it, and it shows.
+// Splits CSV text into rows of cells (no quoting: bench output has none).
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    rows.emplace_back();
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) rows.back().push_back(cell);
+    if (!line.empty() && line.back() == ',') rows.back().emplace_back();
+  }
+  return rows;
+}
+
 // The share of the `zfight` planes' pixels in a PNG where the farther
 // (blue) plane shows.
 double farPlaneShare(const std::string& png) {
@@ -726,6 +738,9 @@ double farPlaneShare(const std::string& png) {
   return double(blue) / double(std::max<size_t>(covered, 1));
 }
 
+// Sorted, the nearer (red) plane of `zfight` is drawn first and wins every
+// depth tie, so D16's z-fighting does not show; `--draw-order scene` draws
+// the farther (blue) plane first, as the scene lists it, and it shows.
 TEST_F(Cli, DrawOrderSceneShowsZFighting) {
   auto farShare = [&](const std::string& options) {
     std::string png = out("z.png");
@@ -753,21 +768,20 @@ TEST_F(Cli, DeviceMemoryIncludesTheRenderTargets) {
   };
   // 320x180: an RGBA16F 4x target and its resolve are ~2.3 MB more per frame in flight.
   EXPECT_GT(memory("4") - memory("1"), 2.0e6);
-}
-
-// Splits CSV text into rows of cells (no quoting: bench output has none).
-std::vector<std::vector<std::string>> csvRows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    rows.emplace_back();
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) rows.back().push_back(cell);
-    if (!line.empty() && line.back() == ',') rows.back().emplace_back();
-  }
-  return rows;
+  // In one process, a setting without shadows after one with 2048-texel maps
+  // holds no maps (it reported the previous row's 114 MB).
+  ASSERT_EQ(run("bench default -o " + out("bm") +
+                " --size 64x36 --frames 2 --rounds 1 --modes phong --tess 1 --msaa 1 "
+                "--shadows hard,off --shadow-sizes 2048 --reference none")
+                .exitCode,
+            0);
+  auto rows = csvRows(readText(out("bm/results.csv")));
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows[0][15], "device_memory_mb");
+  ASSERT_EQ(rows[1][7], "hard");
+  ASSERT_EQ(rows[2][7], "off");
+  EXPECT_GT(std::stod(rows[1][15]), 50.0) << "seven 2048-texel D32 layers";
+  EXPECT_LT(std::stod(rows[2][15]), 10.0);
 }
 
 // A chart decodes as a PNG, is mostly white paper, and has ink, grid and

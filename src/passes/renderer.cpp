@@ -329,6 +329,11 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
     // Its code compiles on the queue's thread while this one builds the
     // forward pipelines (the first frame of `render default` waited for it).
     shadow_.warmUp(settings.shadowDepthClamp);
+  } else if (shadow_.release()) {
+    // Without shadows the map's memory is given back (a bench row without
+    // shadows after one with them reported the maps), and the frames' sets
+    // point at the placeholder until a later setting wants a map again.
+    for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
   }
   settings_ = settings;
   compiledLights_.reset();

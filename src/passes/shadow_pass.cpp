@@ -242,6 +242,17 @@ bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
   return true;
 }
 
+bool ShadowPass::release() {
+  if (!map_) return false;
+  context_.waitIdle();  // frames in flight read the map
+  waitForWarmUp();
+  warmed_ = false;
+  layerViews_.clear();
+  drawnFrom_.clear();
+  map_ = Image{};
+  return true;
+}
+
 uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
                             std::span<const DrawItem> draws, uint32_t sceneUpload,
                             std::span<const glm::mat4> objectTransforms,

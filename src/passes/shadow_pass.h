@@ -33,6 +33,9 @@ class ShadowPass {
   // stay the same; returns true when the image changed (re-point the
   // descriptors that read it). Waits for the device before replacing it.
   bool prepare(uint32_t layers, uint32_t size);
+  // Frees the map (frames without shadows need none; view() is then the
+  // placeholder's); returns true when there was one. Waits for the device.
+  bool release();
   ~ShadowPass();
   ShadowPass(const ShadowPass&) = delete;
   ShadowPass& operator=(const ShadowPass&) = delete;
