@@ -160,7 +160,7 @@ TEST_F(Viewer, PrintedCameraRendersTheSameViewHeadless) {
 }
 
 // Keys that are a script's last steps, or come right before `quit`, are
-// still handled: V prints the camera though no frame follows it. (They were
+// still handled, with one more frame drawn for them. (They were
 // dropped with the script's end; the summary then read "median of the last
 // 0: 0.000 ms" instead of saying nothing was timed.)
 TEST_F(Viewer, KeysJustBeforeTheScriptEndsAreHandled) {
@@ -171,6 +171,10 @@ TEST_F(Viewer, KeysJustBeforeTheScriptEndsAreHandled) {
         << script << r.output;
     EXPECT_EQ(r.output.find("median of the last 0"), std::string::npos) << r.output;
   }
+  // A last P gets the frame it needs to write its screenshot.
+  CommandResult shot = view("frames 2\nkey P\n");
+  ASSERT_EQ(shot.exitCode, 0) << shot.output;
+  EXPECT_TRUE(fs::exists(path("shadelab-screenshot-1.png"))) << shot.output;
   // Twin: a script without the key prints no camera.
   CommandResult r = view("frames 2\nquit\n");
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -119,16 +119,21 @@ void Viewer::say(const std::string& message, bool error) {
 
 void Viewer::run() {
   while (!quit_) {
-    // A script that ends (or quits) right after its last keys still has
-    // them handled: the keys' own effects (V's camera line, a setting) take
-    // place, though no frame is drawn after them.
+    // A script that ends (or quits) right after keys still has them
+    // handled, and draws one more frame for them: a setting is drawn, P's
+    // screenshot written, V's camera printed.
     bool scriptGoesOn = !options_.script || advanceScript();
     if (!options_.script && minimized_)
       window_.waitEvents(0.1);  // nothing to draw: sleep until something happens
     else
       window_.pollEvents();
+    bool keysPending = !window_.events().empty();
     handleEvents();
-    if (!scriptGoesOn || window_.closeRequested()) break;
+    if (window_.closeRequested()) break;
+    if (!scriptGoesOn) {
+      if (keysPending && !minimized_) drawFrame();
+      break;
+    }
     glm::ivec2 size = window_.framebufferSize();
     bool wasMinimized = minimized_;
     minimized_ = minimizedByScript_ || window_.iconified() || size.x == 0 || size.y == 0;
