@@ -590,7 +590,13 @@ const std::vector<BadCase>& badCases() {
            "{dir}/s.json: objects[1].instances: the scene's mesh shapes have 65537 instances in "
            "all, above the limit, expected at most 65536 per scene "
            "(MAX_MESH_INSTANCES_PER_SCENE)"},
-      {Group::Json, "scene above the total instance limit", {{"s.json", R"({"materials": {"tree": {"diffuse_map": {"procedural": "tree", "size": 8}}}, "objects": [{"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}]})"}}, render + "{dir}/s.json", 2, kError + "{dir}/s.json: objects[4]: the scene's billboards have 1310720 instances in all, above the limit, expected at most 1048576 per scene"},
+      {Group::Json,
+       "scene above the total instance limit",
+       {{"s.json", R"({"materials": {"tree": {"diffuse_map": {"procedural": "tree", "size": 8}}}, "objects": [{"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}, {"shape": "billboard", "material": "tree", "instances": {"grid": {"count": [512, 512, 1]}}}]})"}},
+       render + "{dir}/s.json",
+       2,
+       kError + "{dir}/s.json: objects[4]: the scene's billboards have 1310720 instances in all, "
+                "above the limit, expected at most 1048576 per scene"},
       {Group::Json,
        "nested 300 deep",
        {{"s.json", R"({"objects": [], "extras": )" + nested("[", "]", 300) + "}"}},

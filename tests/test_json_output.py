@@ -88,6 +88,8 @@ def check_render(binary, cwd):
           f"render: the teapot has no billboards, counted {value['billboard_copies']}")
     check(value["settings"]["billboard_outline"] == "trimmed",
           f"render: billboard_outline {value['settings']['billboard_outline']!r}")
+    check(value["settings"]["draw_order"] == "sorted",
+          f"render: draw_order {value['settings']['draw_order']!r}")
     settings = value["settings"]
     check((settings["width"], settings["height"]) == (64, 36), f"render: size {settings}")
     check(settings["mode"] == "gouraud" and settings["frames"] == 3 and settings["shadows"] == "off",

@@ -81,6 +81,7 @@ nlohmann::json toJson(const FrameSettings& settings) {
       {"lod", settings.lod ? nlohmann::json(settings.lodErrorPixels) : nlohmann::json("off")},
       {"impostor_cells", settings.impostorCells},
       {"billboard_outline", settings.trimBillboards ? "trimmed" : "quad"},
+      {"draw_order", settings.frontToBack ? "sorted" : "scene"},
       {"shadow_bias",
        {{"constant", settings.shadowBias.constant},
         {"slope", settings.shadowBias.slope},

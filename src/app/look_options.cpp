@@ -111,8 +111,8 @@ void addLookOptions(CLI::App* command, LookOptions& options) {
       ->add_option("--draw-order", options.drawOrder,
                    "Opaque objects drawn nearest first, so the depth test spares the fragments "
                    "they hide (sorted), or in the scene's order (scene: where two surfaces' "
-                   "depths tie, the one listed first wins; `render zfight --depth d16 "
-                   "--draw-order scene` shows z-fighting)")
+                   "depths tie, the one drawn first wins, the last with --depth reversed; "
+                   "`render zfight --depth d16 --draw-order scene` shows z-fighting)")
       ->capture_default_str()
       ->check(CLI::IsMember({"sorted", "scene"}));
   command

@@ -492,8 +492,8 @@ ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const 
       // in the light's orthographic view (the view looks along the light).
       glm::vec3 towardsLight = glm::normalize(-glm::mat3(view) * light.direction);
       float depthPerTexel = (eyeToLight * glm::vec4(towardsLight, 0.0f)).z * shadowView.texelSize;
-      frame.data.lookup[slot] = glm::vec4(depthPerTexel * bias.constant,
-                                          depthPerTexel * bias.slope, depthPerTexel, 0.0f);
+      frame.data.lookup[slot] =
+          glm::vec4(depthPerTexel * bias.constant, depthPerTexel * bias.slope, depthPerTexel, 0.0f);
     } else {
       // A texel at distance d is texelSize * d: moving t texels towards the
       // light scales the vector from it by 1 - texelSize * t.
