@@ -722,6 +722,16 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
   return rows;
 }
 
+// Runs `bench ARGUMENTS -o FOLDER` and returns the rows of its results.csv;
+// a failed run is a test failure and gives no rows.
+std::vector<std::vector<std::string>> benchRows(const std::string& arguments,
+                                                const std::string& folder) {
+  CommandResult r = run("bench " + arguments + " -o " + folder);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  if (r.exitCode != 0) return {};
+  return csvRows(readText(folder + "/results.csv"));
+}
+
 // The share of the `zfight` planes' pixels in a PNG where the farther
 // (blue) plane shows.
 double farPlaneShare(const std::string& png) {
@@ -770,12 +780,10 @@ TEST_F(Cli, DeviceMemoryIncludesTheRenderTargets) {
   EXPECT_GT(memory("4") - memory("1"), 2.0e6);
   // In one process, a setting without shadows after one with 2048-texel maps
   // holds no maps (it reported the previous row's 114 MB).
-  ASSERT_EQ(run("bench default -o " + out("bm") +
-                " --size 64x36 --frames 2 --rounds 1 --modes phong --tess 1 --msaa 1 "
-                "--shadows hard,off --shadow-sizes 2048 --reference none")
-                .exitCode,
-            0);
-  auto rows = csvRows(readText(out("bm/results.csv")));
+  auto rows = benchRows(
+      "default --size 64x36 --frames 2 --rounds 1 --modes phong --tess 1 --msaa 1 "
+      "--shadows hard,off --shadow-sizes 2048 --reference none",
+      out("bm"));
   ASSERT_EQ(rows.size(), 3u);
   ASSERT_EQ(rows[0][15], "device_memory_mb");
   ASSERT_EQ(rows[1][7], "hard");
@@ -1168,12 +1176,10 @@ TEST_F(Cli, ProgressAndEtaShowOnATerminalOnly) {
 
 // With bench results given, the loosest bound picks the row the CSV says is cheapest.
 TEST_F(Cli, QualityWithLooseBoundPicksTheCheapestBenchedSetting) {
-  ASSERT_EQ(run("bench default -o " + out("b") +
-                " --size 64x36 --frames 3 --rounds 1 --modes flat,gouraud,phong --tess 0.5,1 "
-                "--msaa 1")
-                .exitCode,
-            0);
-  auto rows = csvRows(readText(out("b/results.csv")));
+  auto rows = benchRows(
+      "default --size 64x36 --frames 3 --rounds 1 --modes flat,gouraud,phong --tess 0.5,1 "
+      "--msaa 1",
+      out("b"));
   ASSERT_EQ(rows.size(), 7u);
   size_t cheapest = 1;
   for (size_t i = 2; i < rows.size(); ++i)
@@ -1199,11 +1205,8 @@ TEST_F(Cli, QualityWithTightestBoundPicksOnlyTheExactSetting) {
 // FLIP against the traced reference: the CSV names it, the sweep says so,
 // and a FLIP bound (which lies in 0..1) picks a setting that meets it.
 TEST_F(Cli, BenchAndQualityDefaultToTheTracedReferenceAndFlip) {
-  ASSERT_EQ(run("bench spheres -o " + out("b") +
-                " --size 64x36 --frames 3 --rounds 1 --modes phong --tess 1 --msaa 1")
-                .exitCode,
-            0);
-  auto rows = csvRows(readText(out("b/results.csv")));
+  auto rows = benchRows(
+      "spheres --size 64x36 --frames 3 --rounds 1 --modes phong --tess 1 --msaa 1", out("b"));
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[1][17], "trace");
   const double flip = std::stod(rows[1][21]);

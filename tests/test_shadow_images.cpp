@@ -4,6 +4,7 @@
 // shadow term against the C++ twin of the equation with the tracer's exact
 // shadow rays; acne and peter-panning of the default bias measured.
 #include <cmath>
+#include <functional>
 
 #include "core/scene/lighting.h"
 #include "core/scene/scene_json.h"
@@ -156,24 +157,31 @@ TEST_F(ShadowImages, TwinWithoutShadowTermDisagrees) {
   EXPECT_LT(agreement.agreeing, agreement.samples - agreement.shadowedSamples * 9 / 10);
 }
 
+// check(errors) for each light of `scene` and each filter, at the default
+// bias and map size, against the tracer's truth for that light.
+void forEachLightAndFilter(Renderer& renderer, const Scene& scene,
+                           const std::function<void(const ShadowErrors&)>& check) {
+  for (uint32_t light = 0; light < scene.lights.size(); ++light) {
+    ShadowTruth truth = traceShadowTruth(scene, light, kWidth, kHeight);
+    for (ShadowMethod method : {ShadowMethod::Hard, ShadowMethod::Pcf3, ShadowMethod::Pcf5}) {
+      SCOPED_TRACE(std::to_string(light) + " " + std::string(nameOf(kShadowMethodNames, method)));
+      check(measureShadowErrors(renderer, scene, light, truth, method, ShadowBias{},
+                                kDefaultShadowMapSize));
+    }
+  }
+}
+
 // The default bias: acne under 0.1% of truly lit pixels and peter-panning
 // under 1% of truly shadowed ones near contact, for each light kind and
 // each filter (the filters' receiver-plane taps must not push shadows off
 // their casters).
 TEST_F(ShadowImages, DefaultBiasKeepsAcneAndPeterPanningSmall) {
-  Scene scene = builtinScene("shadows");
-  for (uint32_t light = 0; light < scene.lights.size(); ++light) {
-    ShadowTruth truth = traceShadowTruth(scene, light, kWidth, kHeight);
-    for (ShadowMethod method : {ShadowMethod::Hard, ShadowMethod::Pcf3, ShadowMethod::Pcf5}) {
-      SCOPED_TRACE(std::to_string(light) + " " + std::string(nameOf(kShadowMethodNames, method)));
-      ShadowErrors errors = measureShadowErrors(renderer(), scene, light, truth, method,
-                                                ShadowBias{}, kDefaultShadowMapSize);
-      ASSERT_GT(errors.lit, 5000u);
-      ASSERT_GT(errors.contact, 100u);
-      EXPECT_LT(errors.acneFraction(), 0.001);
-      EXPECT_LT(errors.peterPanningFraction(), 0.01);
-    }
-  }
+  forEachLightAndFilter(renderer(), builtinScene("shadows"), [](const ShadowErrors& errors) {
+    ASSERT_GT(errors.lit, 5000u);
+    ASSERT_GT(errors.contact, 100u);
+    EXPECT_LT(errors.acneFraction(), 0.001);
+    EXPECT_LT(errors.peterPanningFraction(), 0.01);
+  });
 }
 
 // Percentage-closer filtering compares its outer taps, up to 2 sqrt(2)
@@ -195,16 +203,10 @@ TEST_F(ShadowImages, FilteredLookupsKeepALitFloorLit) {
     "objects": [{"name": "floor", "shape": "plane", "size": 30, "tessellation": 8,
                  "material": {"ka": 0, "kd": 0.8, "ks": 0, "shininess": 4}}]})",
                                "floor.json");
-  for (uint32_t light = 0; light < scene.lights.size(); ++light) {
-    ShadowTruth truth = traceShadowTruth(scene, light, kWidth, kHeight);
-    for (ShadowMethod method : {ShadowMethod::Hard, ShadowMethod::Pcf3, ShadowMethod::Pcf5}) {
-      SCOPED_TRACE(std::to_string(light) + " " + std::string(nameOf(kShadowMethodNames, method)));
-      ShadowErrors errors = measureShadowErrors(renderer(), scene, light, truth, method,
-                                                ShadowBias{}, kDefaultShadowMapSize);
-      ASSERT_GT(errors.lit, 20000u);
-      EXPECT_LT(errors.dimmedFraction(), 0.001) << errors.dimmed << " of " << errors.lit;
-    }
-  }
+  forEachLightAndFilter(renderer(), scene, [](const ShadowErrors& errors) {
+    ASSERT_GT(errors.lit, 20000u);
+    EXPECT_LT(errors.dimmedFraction(), 0.001) << errors.dimmed << " of " << errors.lit;
+  });
   ShadowTruth truth = traceShadowTruth(scene, 0, kWidth, kHeight);
   ShadowErrors noBias = measureShadowErrors(renderer(), scene, 0, truth, ShadowMethod::Hard,
                                             {0.0f, 0.0f, 0.0f}, kDefaultShadowMapSize);
