@@ -1218,6 +1218,8 @@ TEST_F(Cli, BenchAndQualityDefaultToTheTracedReferenceAndFlip) {
             std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("<- chosen"), std::string::npos) << r.output;
+  // The sweep weighs shadows too, and says so of the candidates without them.
+  EXPECT_NE(r.output.find(" no shadows "), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, UnreachableQualityIsAnInputError) {
