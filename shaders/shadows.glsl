@@ -146,7 +146,8 @@ float shadowLookup(int i, vec4 coordinates) {
     // coordinates (one triangle's, exact on planes). Where they say nothing
     // (the quad straddles two cube faces, or a map texel is seen edge-on)
     // the taps keep this point's depth; at grazing angles the gradient is
-    // held to kMaxSlopeTangent texels of depth per texel, as the slope bias is.
+    // held to 100 texels of depth per texel (kMaxSlopeTangent, 10, left
+    // visible rings towards the horizon).
     vec3 alongX = dFdx(uvDepth), alongY = dFdy(uvDepth);
     float determinant = alongX.x * alongY.y - alongX.y * alongY.x;
     vec2 gradient = vec2(alongY.y * alongX.z - alongX.y * alongY.z,
