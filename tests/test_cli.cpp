@@ -336,6 +336,33 @@ TEST_F(Cli, ScenesWithoutLightsOrWithMirrorsAndNoEnvironmentWarn) {
   EXPECT_EQ(lit.output.find("warning"), std::string::npos) << lit.output;
 }
 
+// A near plane the depth buffer cannot resolve draws a blank or broken image;
+// render says so before drawing (depthPrecisionWarning), and not where the
+// depth buffer is fine.
+TEST_F(Cli, NearPlaneTheDepthBufferCannotResolveWarns) {
+  std::ofstream(out("near.json"))
+      << R"({"camera": {"eye": [0, 2, 6], "at": [0, 0, 0], "near": 1e-7, "far": 100},
+        "lights": [{"type": "point", "position": [0, 3, 3]}],
+        "objects": [{"shape": "sphere"}]})";
+  CommandResult blank = run("render " + out("near.json") + " --size 32x18 -o " + out("n.png"));
+  EXPECT_EQ(blank.exitCode, 0) << blank.output;
+  EXPECT_NE(blank.output.find("shadelab: warning: depth mode d32f with near 1e-07 and far 100: at "
+                              "the camera's target, 6.32 away, depth rounds to the far plane's "
+                              "and surfaces are not drawn"),
+            std::string::npos)
+      << blank.output;
+  CommandResult reversed = run("render " + out("near.json") + " --depth reversed --size 32x18 -o " +
+                               out("r.png"));
+  EXPECT_EQ(reversed.output.find("warning"), std::string::npos) << reversed.output;
+  CommandResult fights = run("render zfight --depth d16 --size 32x18 -o " + out("z.png"));
+  EXPECT_NE(fights.output.find("depths less than 2.08 (1.78% of the distance) apart are not told "
+                               "apart"),
+            std::string::npos)
+      << fights.output;
+  CommandResult fine = run("render default --depth d16 --size 32x18 -o " + out("d.png"));
+  EXPECT_EQ(fine.output.find("warning"), std::string::npos) << fine.output;
+}
+
 TEST_F(Cli, RenderLoadsJsonSceneFile) {
   CommandResult r = run(std::string("render ") + SHADELAB_ASSET_DIR +
                         "/scenes/three-spheres.json -o " + out("a.png") + " --size 64x36");

@@ -11,6 +11,7 @@
 #include "core/base/errors.h"
 #include "core/base/files.h"
 #include "core/base/names.h"
+#include "core/scene/gltf_loader.h"
 
 namespace shadelab {
 namespace {
@@ -121,6 +122,20 @@ void prepareOutputFolder(const std::filesystem::path& folder, const std::string&
 void printSceneWarnings(const Scene& scene, bool rasteriser) {
   for (const std::string& warning : sceneWarnings(scene, rasteriser))
     std::fprintf(stderr, "shadelab: warning: %s\n", warning.c_str());
+}
+
+void printDepthWarning(const Scene& scene, DepthMode depth) {
+  const Camera& camera = scene.camera;
+  Bounds bounds = sceneBounds(scene);
+  glm::vec3 sight = glm::normalize(camera.at - camera.eye);
+  double farthest = 0.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    glm::vec3 point{corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
+                    corner & 4 ? bounds.max.z : bounds.min.z};
+    farthest = std::max(farthest, double(glm::dot(point - camera.eye, sight)));
+  }
+  if (std::optional<std::string> warning = depthPrecisionWarning(camera, depth, farthest))
+    std::fprintf(stderr, "shadelab: warning: %s\n", warning->c_str());
 }
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global) {

@@ -75,6 +75,9 @@ void prepareOutputFolder(const std::filesystem::path& folder, const std::string&
 
 // Prints sceneWarnings (scene.h) to stderr as "shadelab: warning: ...".
 void printSceneWarnings(const Scene& scene, bool rasteriser);
+// Prints depthPrecisionWarning (depth.h) for the scene's camera and bounds
+// the same way: a near plane that leaves `depth` unable to draw the scene.
+void printDepthWarning(const Scene& scene, DepthMode depth);
 
 std::unique_ptr<Context> openContext(const GlobalOptions& global);
 // After a command, once every Vulkan object of it is destroyed: with

@@ -235,6 +235,7 @@ int runRender(const RenderOptions& options, const GlobalOptions& global) {
                       options.quality ? "--quality" : "--tess " + options.tessellation,
                       "--max-triangles");
   printSceneWarnings(scene, true);
+  printDepthWarning(scene, depth);
   if (options.simplify > 0.0f) {
     SimplifyStats simplified = simplifyForView(scene, view, options.simplify);
     std::fprintf(out, "simplified loaded meshes to %g px: %llu -> %llu triangles\n",

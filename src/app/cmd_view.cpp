@@ -60,6 +60,7 @@ int runView(const ViewOptions& options, const GlobalOptions& global) {
   checkTriangleBudget(scene, viewer.tessellation, global.maxTriangles,
                       "--tess " + options.tessellation, "--max-triangles");
   printSceneWarnings(scene, true);
+  printDepthWarning(scene, viewer.initial.depth);
 
   std::unique_ptr<Window> window;
   try {

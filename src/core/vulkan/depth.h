@@ -6,6 +6,8 @@
 // 1/z depth squeezes together.
 #include <vulkan/vulkan.h>
 
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/base/names.h"
@@ -26,5 +28,23 @@ inline std::string_view depthModeName(DepthMode mode) {
   return nameOf(kDepthModeNames, mode);
 }
 std::string_view depthFormatName(DepthMode mode);  // "D16_UNORM", ...
+
+struct Camera;  // core/scene/scene.h
+
+// The smallest difference of distance along the line of sight that `mode`
+// tells apart `distance` in front of `camera`: one step of the format at the
+// depth value there (a unit of the last place for float, 1 / (2^bits - 1)
+// for UNORM) over the rate at which the projection's depth changes with
+// distance. Infinite where the depth value rounds to the clear value, so
+// that surfaces there fail the depth test and are not drawn at all.
+double depthResolution(const Camera& camera, DepthMode mode, double distance);
+
+// What a user should know before drawing with `mode`, if anything: at the
+// camera's target or at `farthest` (the distance of the scene's farthest
+// point along the line of sight), surfaces are not drawn, or depths 1% of
+// the distance apart are not told apart. Names the mode, near and far, the
+// distance and the fixes (a larger near plane, reversed-Z).
+std::optional<std::string> depthPrecisionWarning(const Camera& camera, DepthMode mode,
+                                                 double farthest);
 
 }  // namespace shadelab
