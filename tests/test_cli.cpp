@@ -351,8 +351,8 @@ TEST_F(Cli, NearPlaneTheDepthBufferCannotResolveWarns) {
                               "and surfaces are not drawn"),
             std::string::npos)
       << blank.output;
-  CommandResult reversed = run("render " + out("near.json") + " --depth reversed --size 32x18 -o " +
-                               out("r.png"));
+  CommandResult reversed =
+      run("render " + out("near.json") + " --depth reversed --size 32x18 -o " + out("r.png"));
   EXPECT_EQ(reversed.output.find("warning"), std::string::npos) << reversed.output;
   CommandResult fights = run("render zfight --depth d16 --size 32x18 -o " + out("z.png"));
   EXPECT_NE(fights.output.find("depths less than 2.08 (1.78% of the distance) apart are not told "

@@ -130,7 +130,8 @@ void printDepthWarning(const Scene& scene, DepthMode depth) {
   glm::vec3 sight = glm::normalize(camera.at - camera.eye);
   double farthest = 0.0;
   for (int corner = 0; corner < 8; ++corner) {
-    glm::vec3 point{corner & 1 ? bounds.max.x : bounds.min.x, corner & 2 ? bounds.max.y : bounds.min.y,
+    glm::vec3 point{corner & 1 ? bounds.max.x : bounds.min.x,
+                    corner & 2 ? bounds.max.y : bounds.min.y,
                     corner & 4 ? bounds.max.z : bounds.min.z};
     farthest = std::max(farthest, double(glm::dot(point - camera.eye, sight)));
   }

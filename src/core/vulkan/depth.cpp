@@ -64,9 +64,9 @@ double depthResolution(const Camera& camera, DepthMode mode, double distance) {
 std::optional<std::string> depthPrecisionWarning(const Camera& camera, DepthMode mode,
                                                  double farthest) {
   double target = glm::length(glm::dvec3(camera.at) - glm::dvec3(camera.eye));
-  for (auto [distance, what] : {std::pair{target, "the camera's target"},
-                                std::pair{std::min(farthest, double(camera.far)),
-                                          "the scene's farthest point"}}) {
+  for (auto [distance, what] :
+       {std::pair{target, "the camera's target"},
+        std::pair{std::min(farthest, double(camera.far)), "the scene's farthest point"}}) {
     if (!(distance > camera.near && distance <= camera.far)) continue;
     double resolution = depthResolution(camera, mode, distance);
     if (resolution <= 0.01 * distance) continue;
