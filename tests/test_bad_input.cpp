@@ -172,7 +172,7 @@ const std::vector<BadCase>& badCases() {
        {},
        render + "--max-triangles 0",
        2,
-       "--max-triangles: Value 0 not in range"},
+       "shadelab: error: --max-triangles: Value 0 not in range"},
       {Group::Options,
        "budget below the default scene",
        {},
@@ -198,38 +198,38 @@ const std::vector<BadCase>& badCases() {
        2,
        kError + "--metric 'l1'"},
       {Group::Options, "unknown depth", {}, render + "--depth d12", 2, kError + "--depth 'd12'"},
-      {Group::Options, "msaa 3", {}, render + "--msaa 3", 2, "--msaa: "},
+      {Group::Options, "msaa 3", {}, render + "--msaa 3", 2, "shadelab: error: --msaa: "},
       {Group::Options,
        "lod neither auto nor off",
        {},
        render + "--lod sometimes",
        2,
-       "--lod: sometimes not in {auto,off}"},
+       "shadelab: error: --lod: sometimes not in {auto,off}"},
       {Group::Options,
        "lod error of zero pixels",
        {},
        render + "--lod-error 0",
        2,
-       "--lod-error: Value 0 not in range"},
+       "shadelab: error: --lod-error: Value 0 not in range"},
       // NaN compares false with both ends of a range: CLI::Range lets it through.
       {Group::Options,
        "lod error not a number",
        {},
        render + "--lod-error nan",
        2,
-       "--lod-error: Value nan not in range"},
+       "shadelab: error: --lod-error: Value nan not in range"},
       {Group::Options,
        "tessellation error not a number",
        {},
        render + "--tess auto --tess-error nan",
        2,
-       "--tess-error: Value nan not in range"},
+       "shadelab: error: --tess-error: Value nan not in range"},
       {Group::Options,
        "simplify infinite",
        {},
        render + "--simplify inf",
        2,
-       "--simplify: Value inf not in range"},
+       "shadelab: error: --simplify: Value inf not in range"},
       {Group::Options,
        "bench tessellation not a number",
        {},
@@ -398,7 +398,7 @@ const std::vector<BadCase>& badCases() {
        {},
        "compare -o {dir}/s.png --modes flat --column phong",
        2,
-       "--modes excludes --column"},
+       "shadelab: error: --modes excludes --column"},
       {Group::Options,
        "bench unknown filter",
        {},
@@ -1150,7 +1150,7 @@ const std::vector<BadCase>& badCases() {
        {},
        "render -o {dir}/a.png --turntable 3 --fps 5",
        2,
-       "--fps requires --gif"},
+       "shadelab: error: --fps requires --gif"},
       {Group::Options,
        "camera path with a key twice",
        {{"path.json", R"([{"eye": [0, 1, 5], "eye": [5, 1, 0]}])"}},
@@ -1292,14 +1292,12 @@ void runGroup(Group group, const char* groupName) {
     std::set<std::string> before = filesUnder(dir);
     // timeout: a case that hangs (a FIFO read) fails instead of stalling the suite.
     CommandResult r = run(substituted(bad.arguments, dir), bad.environment + " timeout 60");
-    // The message's first line: the first line of shadelab's own (commands
-    // that report progress print it before), else of CLI11's usage error.
+    // The message's first line: every error, CLI11's usage errors too, reads
+    // "shadelab: error: ..." (commands that report progress print it before).
     std::string expected = substituted(bad.firstLine, dir);
-    size_t start = 0;
-    if (expected.rfind("shadelab: ", 0) == 0) {
-      size_t own = r.output.find("\nshadelab: ");
-      start = r.output.rfind("shadelab: ", 0) == 0 || own == std::string::npos ? 0 : own + 1;
-    }
+    EXPECT_EQ(expected.rfind("shadelab: ", 0), 0u) << bad.name << ": " << expected;
+    size_t own = r.output.find("\nshadelab: ");
+    size_t start = r.output.rfind("shadelab: ", 0) == 0 || own == std::string::npos ? 0 : own + 1;
     std::string firstLine = r.output.substr(start, r.output.find('\n', start) - start);
     EXPECT_EQ(r.exitCode, bad.exitCode) << bad.name << "\n" << r.output;
     EXPECT_EQ(firstLine.substr(0, expected.size()), expected) << bad.name << "\n" << r.output;

@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
     const std::string prefix = "Could not convert: ";
     size_t equals = what.find(" = ");
     if (!what.starts_with(prefix) || equals == std::string::npos) {
-      app.exit(error);
+      std::fprintf(stderr, "shadelab: error: %s (see --help)\n", what.c_str());
       return 2;
     }
     std::string name = what.substr(prefix.size(), equals - prefix.size());
@@ -74,7 +74,9 @@ int main(int argc, char** argv) {
                  value.c_str(), kind.c_str());
     return 2;  // usage error
   } catch (const CLI::ParseError& error) {
-    app.exit(error);
+    // CLI11's words ("--frames: Value 0 not in range 1 to 100000"), in the
+    // form every other error takes.
+    std::fprintf(stderr, "shadelab: error: %s (see --help)\n", error.what());
     return 2;  // usage error
   }
   int code = 1;
