@@ -630,6 +630,19 @@ TEST_F(Cli, KilledBenchLeavesNoFolder) {
   EXPECT_EQ(filesLeft(), 0u);
 }
 
+// A frame sequence stages each frame as it is drawn and puts them in place
+// only at the end: terminated part-way, it leaves none of them, staged or
+// not. The shell waits until a staged frame exists before the signal.
+TEST_F(Cli, TerminatedSequenceLeavesNoStagedFrames) {
+  CommandResult r = run("render default --turntable 400 --size 320x180 -o " + out("t.png") +
+                        " & pid=$!; for i in $(seq 3000); do ls -A " + dir.string() +
+                        " | grep -q staged && break; sleep 0.01; done; ls -A " + dir.string() +
+                        " | grep -q staged && echo STAGED-SEEN; kill -TERM $pid; wait $pid");
+  EXPECT_NE(r.output.find("STAGED-SEEN"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exitCode, 128 + 15) << "the sequence ended before the signal\n" << r.output;
+  EXPECT_EQ(filesLeft(), 0u);
+}
+
 TEST_F(Cli, MissingTextureNamesTheFileAndTheMaterialAndWritesNothing) {
   std::ofstream(out("textured.json"))
       << R"({"materials": {"brick": {"diffuse_map": "maps/missing.png"}},

@@ -173,6 +173,7 @@ void OutputGroup::add(const std::filesystem::path& path,
       throw InputError("cannot create output folder '" + folder_.string() +
                        "': " + error.message());
     madeFolder_ = true;
+    folderGuard_ = RemovedOnSignal(folder_, true);
   }
   checkWritableFolder(path);
   std::optional<std::string> random = randomHex();
@@ -184,7 +185,7 @@ void OutputGroup::add(const std::filesystem::path& path,
   name += *random;
   name += path.extension().string();
   fs::path staged = path.parent_path() / name;
-  staged_.push_back({path, staged});
+  staged_.push_back({path, staged, RemovedOnSignal(staged)});
   try {
     write(staged);
   } catch (const InputError& failure) {
@@ -205,7 +206,9 @@ void OutputGroup::keep() {
       throw InputError("cannot write '" + file.target.string() +
                        "': " + std::generic_category().message(error));
     }
+    staged_[renamed_].guard.release();
   }
+  folderGuard_.release();
   kept_ = true;
 }
 

@@ -9,6 +9,7 @@
 
 #include "app/commands.h"
 #include "core/base/errors.h"
+#include "core/base/files.h"
 #include "core/scene/scene.h"
 #include "core/scene/shading.h"
 #include "core/vulkan/context.h"
@@ -90,7 +91,8 @@ int finishWithValidation(Context& context, int exitCode);
 // writers that go by it), and only keep() renames them all into place. A
 // run that fails before keep() removes what it staged, and the folder when
 // it made it: nothing of a failed command stays on disk, and the files of
-// an earlier run under the same names are left as they were.
+// an earlier run under the same names are left as they were. The same holds
+// when SIGINT, SIGTERM or SIGHUP end the process (RemovedOnSignal, files.h).
 class OutputGroup {
  public:
   // `folder`: made on the first write if it does not exist (empty: none).
@@ -110,10 +112,12 @@ class OutputGroup {
  private:
   std::filesystem::path folder_;
   bool madeFolder_ = false;
+  RemovedOnSignal folderGuard_;
   bool kept_ = false;
   struct Staged {
     std::filesystem::path target;
     std::filesystem::path staged;
+    RemovedOnSignal guard;
   };
   std::vector<Staged> staged_;
   size_t renamed_ = 0;

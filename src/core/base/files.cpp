@@ -19,17 +19,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Temporaries being written, for the signal handler. Fixed storage: a signal
-// handler may not allocate, only unlink (async-signal-safe) and re-raise.
-constexpr int kTemporarySlots = 8;
+// Paths to remove on a signal. Fixed storage: a signal handler may not
+// allocate, only unlink and rmdir (async-signal-safe) and re-raise. Pages of
+// slotPath that no path was written to are never touched (no memory used).
 constexpr size_t kPathBytes = 4096;
-// A slot is free (0), being filled (1) or holds a path to remove (2).
-std::atomic<int> slotState[kTemporarySlots];
-char slotPath[kTemporarySlots][kPathBytes];
+constexpr int kSlots = RemovedOnSignal::kSignalSlots;
+// A slot is free, being filled, or holds a file or a folder to remove.
+enum SlotState : int { kFree, kFilling, kFile, kFolder };
+std::atomic<int> slotState[kSlots];
+char slotPath[kSlots][kPathBytes];
 
-void removeTemporariesAndReraise(int signal) {
-  for (int i = 0; i < kTemporarySlots; ++i)
-    if (slotState[i].load() == 2) ::unlink(slotPath[i]);
+void removePathsAndReraise(int signal) {
+  for (int i = 0; i < kSlots; ++i)
+    if (slotState[i].load() == kFile) ::unlink(slotPath[i]);
+  // Newest first: a folder made inside another goes before it.
+  for (int i = kSlots - 1; i >= 0; --i)
+    if (slotState[i].load() == kFolder) ::rmdir(slotPath[i]);
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
@@ -42,7 +47,7 @@ void installSignalCleanup() {
       struct sigaction current {};
       if (sigaction(signal, nullptr, &current) != 0 || current.sa_handler != SIG_DFL) continue;
       struct sigaction action {};
-      action.sa_handler = removeTemporariesAndReraise;
+      action.sa_handler = removePathsAndReraise;
       sigemptyset(&action.sa_mask);
       sigaction(signal, &action, nullptr);
     }
@@ -58,21 +63,12 @@ std::string errnoText(int error) {
 // An exclusively created temporary beside the target; removed unless released.
 class TemporaryFile {
  public:
-  explicit TemporaryFile(const fs::path& target) : target_(target) {
-    installSignalCleanup();
-    try {
-      create();
-    } catch (...) {
-      if (slot_ < kTemporarySlots) slotState[slot_].store(0);
-      throw;
-    }
-  }
+  explicit TemporaryFile(const fs::path& target) : target_(target) { create(); }
   TemporaryFile(const TemporaryFile&) = delete;
   TemporaryFile& operator=(const TemporaryFile&) = delete;
   ~TemporaryFile() {
     if (descriptor_ >= 0) ::close(descriptor_);
     if (!renamed_) ::unlink(path_.c_str());
-    if (slot_ < kTemporarySlots) slotState[slot_].store(0);
   }
 
   void write(std::string_view bytes) {
@@ -106,30 +102,14 @@ class TemporaryFile {
       name += *random;
       name += ".tmp";
       path_ = (target_.parent_path().empty() ? fs::path(".") : target_.parent_path()) / name;
-      if (path_.native().size() >= kPathBytes) fail("path too long");
-      registerForSignals();
+      // Before the file exists, so no instant passes with a file the
+      // handler does not know.
+      guard_ = RemovedOnSignal(path_);
       // O_EXCL with O_CREAT also refuses a symbolic link planted at the name.
       descriptor_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
       if (descriptor_ < 0 && errno != EEXIST) fail(errnoText(errno));
     }
     if (descriptor_ < 0) fail("no free temporary name");
-  }
-
-  // Before the file exists, so no instant passes with a file the handler
-  // does not know. More than kTemporarySlots at once: written unguarded.
-  void registerForSignals() {
-    if (slot_ == kTemporarySlots)
-      for (int i = 0; i < kTemporarySlots; ++i) {
-        int expected = 0;
-        if (slotState[i].compare_exchange_strong(expected, 1)) {
-          slot_ = i;
-          break;
-        }
-      }
-    if (slot_ == kTemporarySlots) return;
-    slotState[slot_].store(1);
-    std::memcpy(slotPath[slot_], path_.c_str(), path_.native().size() + 1);
-    slotState[slot_].store(2);
   }
 
   [[noreturn]] void fail(const std::string& reason) const {
@@ -139,7 +119,7 @@ class TemporaryFile {
   fs::path target_;
   fs::path path_;
   int descriptor_ = -1;
-  int slot_ = kTemporarySlots;
+  RemovedOnSignal guard_;
   bool renamed_ = false;
 };
 
@@ -163,6 +143,35 @@ void checkStat(const struct stat& info, const fs::path& path, std::string_view w
 }
 
 }  // namespace
+
+RemovedOnSignal::RemovedOnSignal(const fs::path& path, bool folder) {
+  installSignalCleanup();
+  if (path.native().size() >= kPathBytes) return;  // not guarded (no path is this long)
+  for (int i = 0; i < kSlots; ++i) {
+    int expected = kFree;
+    if (slotState[i].compare_exchange_strong(expected, kFilling)) {
+      slot_ = i;
+      break;
+    }
+  }
+  if (slot_ == kSlots) return;
+  std::memcpy(slotPath[slot_], path.c_str(), path.native().size() + 1);
+  slotState[slot_].store(folder ? kFolder : kFile);
+}
+
+RemovedOnSignal& RemovedOnSignal::operator=(RemovedOnSignal&& other) noexcept {
+  if (this != &other) {
+    release();
+    slot_ = other.slot_;
+    other.slot_ = kSlots;
+  }
+  return *this;
+}
+
+void RemovedOnSignal::release() {
+  if (slot_ < kSlots) slotState[slot_].store(kFree);
+  slot_ = kSlots;
+}
 
 std::optional<std::string> randomHex() {
   uint64_t random = 0;

@@ -24,6 +24,32 @@ std::optional<std::string> randomHex();
 // too large"). SIGINT, SIGTERM and SIGHUP remove a temporary being written
 // before the process ends (kill -9 cannot be caught: see README).
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
+
+// A path the process removes if SIGINT, SIGTERM or SIGHUP end it while this
+// is held: a file not yet in its place (writeFileAtomically's temporary, a
+// command's staged outputs) or a folder made for outputs (removed only once
+// empty, after every file). The handler runs once, where the program left
+// those signals' default action, then ends the process as the signal would.
+// Up to kSignalSlots paths at once; more are not removed (the path is still
+// written, only unguarded).
+class RemovedOnSignal {
+ public:
+  static constexpr int kSignalSlots = 1024;
+  RemovedOnSignal() = default;
+  explicit RemovedOnSignal(const std::filesystem::path& path, bool folder = false);
+  RemovedOnSignal(RemovedOnSignal&& other) noexcept : slot_(other.slot_) {
+    other.slot_ = kSignalSlots;
+  }
+  RemovedOnSignal& operator=(RemovedOnSignal&& other) noexcept;
+  RemovedOnSignal(const RemovedOnSignal&) = delete;
+  RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
+  ~RemovedOnSignal() { release(); }
+  // The path is in place (or gone): a signal no longer removes it.
+  void release();
+
+ private:
+  int slot_ = kSignalSlots;
+};
 void writeTextFile(const std::filesystem::path& path, const std::string& text);
 
 // Input size limits, stated once. Scenes, glTF JSON and viewer scripts are
