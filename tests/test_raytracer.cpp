@@ -213,6 +213,45 @@ TEST(RayTracer, CoverageAlphaWeighsTheSurfaceByItsCoverage) {
   EXPECT_FLOAT_EQ(RayTracer(scene).transmittance(up, kInf), 0.75f);  // no Fresnel
 }
 
+// glTF alphaMode MASK: a 2 x 2 plane with a 2 x 2 texture whose alpha is 1
+// on one diagonal and 0 on the other, cut-off 0.5. Rays at the texel centres
+// (makePlane: u = x / 2 + 0.5, t = 1 - v = z / 2 + 0.5) hit the kept cells
+// and pass the cut ones, camera and shadow rays alike; without the cut-off
+// every ray hits.
+TEST(RayTracer, MaskCutsAwayWhereAlphaIsBelowTheCutoff) {
+  ShapeDesc plane{ShapeKind::Plane};
+  plane.size = 2.0f;
+  Scene scene = oneObject(plane, glm::mat4(1.0f));
+  Texture texture{"diagonal", 2, 2};
+  texture.rgba8 = {200, 50, 50, 255, 200, 50, 50, 0, 200, 50, 50, 0, 200, 50, 50, 255};
+  scene.textures.push_back(texture);
+  Material& material = scene.objects[0].material;
+  material.diffuseMap.texture = 0;
+  material.alphaCutoff = 0.5f;
+  struct Cell {
+    float x, z;
+    bool kept;  // texel (column x < 0 ? 0 : 1, row z < 0 ? 0 : 1) has alpha 1
+  };
+  const Cell cells[] = {
+      {-0.5f, -0.5f, true}, {0.5f, -0.5f, false}, {-0.5f, 0.5f, false}, {0.5f, 0.5f, true}};
+  for (bool masked : {true, false}) {
+    material.alphaCutoff = masked ? 0.5f : 0.0f;
+    RayTracer tracer(scene);
+    for (const Cell& cell : cells) {
+      const bool blocks = !masked || cell.kept;
+      const Ray down{{cell.x, 2.0f, cell.z}, {0, -1, 0}};
+      EXPECT_EQ(tracer.intersect(down, 0.0f, kInf).has_value(), blocks)
+          << "cell " << cell.x << ", " << cell.z << (masked ? " masked" : " unmasked");
+      const Ray up{{cell.x, -2.0f, cell.z}, {0, 1, 0}};
+      EXPECT_FLOAT_EQ(tracer.transmittance(up, kInf), blocks ? 0.0f : 1.0f);
+    }
+  }
+  // A factor alpha below the cut-off hides the whole surface, texture or not.
+  material.alphaCutoff = 0.5f;
+  material.alpha = 0.4f;
+  EXPECT_FALSE(RayTracer(scene).intersect({{-0.5f, 2.0f, -0.5f}, {0, -1, 0}}, 0.0f, kInf));
+}
+
 TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
   ShapeDesc sphere{ShapeKind::Icosphere};
   sphere.radius = 1.0f;

@@ -142,7 +142,18 @@ struct RayTracer::TracedObject {
   // The texture coordinates at an object-space point on (or, linearly
   // extended, near) the surface hit with `normal` on `triangle`.
   glm::vec2 uvAt(glm::vec3 point, glm::vec3 normal, uint32_t triangle) const;
+  // The texture coordinates of `hit` on `local` (materialAt's).
+  glm::vec2 hitUv(const Ray& local, const LocalHit& hit, glm::vec3 geometric) const {
+    return projection == UvProjection::Mesh ? hit.uv
+                                            : uvAt(local.at(hit.t), geometric, hit.triangle);
+  }
 };
+
+namespace {
+// glTF alphaMode MASK: a ray passes through at most this many cut-away
+// layers of one object before the object counts as missed.
+constexpr int kMaxCutAwayLayers = 1024;
+}  // namespace
 
 glm::vec2 RayTracer::TracedObject::uvAt(glm::vec3 point, glm::vec3 normal,
                                         uint32_t triangle) const {
@@ -314,6 +325,17 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
 
 RayTracer::~RayTracer() = default;
 
+bool RayTracer::nearestKeptHit(const TracedObject& object, const Ray& local, float tMin, float tMax,
+                               LocalHit& hit, glm::vec3& geometric) const {
+  const Material& material = scene_.objects[object.sceneObject].material;
+  for (int layer = 0; layer < kMaxCutAwayLayers; ++layer) {
+    if (!object.intersect(local, tMin, tMax, hit, geometric)) return false;
+    if (!cutAway(material, textures_, object.hitUv(local, hit, geometric))) return true;
+    tMin = std::nextafter(hit.t, kInfinity);
+  }
+  return false;
+}
+
 std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float tMax) const {
   const glm::vec3 inverse = 1.0f / ray.direction;
   LocalHit best;
@@ -327,7 +349,7 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float
     LocalHit hit;
     glm::vec3 geometric;
     const Ray local = object.toLocal(ray);
-    if (!object.intersect(local, tMin, tMax, hit, geometric)) continue;
+    if (!nearestKeptHit(object, local, tMin, tMax, hit, geometric)) continue;
     best = hit;
     bestLocal = local;
     bestGeometric = geometric;
@@ -366,6 +388,17 @@ float RayTracer::transmittance(const Ray& ray, float tMax, bool fresnel) const {
     float tEntry;
     if (!intersectBounds(object.worldBounds, ray, inverse, 0.0f, tMax, tEntry)) continue;
     const Ray local = object.toLocal(ray);
+    if (scene_.objects[object.sceneObject].material.alphaCutoff > 0.0f) {
+      // A cut-out: each crossing the cut keeps blocks (or passes kt).
+      LocalHit hit;
+      glm::vec3 geometric;
+      for (float from = 0.0f; nearestKeptHit(object, local, from, tMax, hit, geometric);
+           from = std::nextafter(hit.t, kInfinity)) {
+        if (object.transparency <= 0.0f) return 0.0f;
+        passed *= object.transparency;
+      }
+      continue;
+    }
     if (!fresnel || object.transparency <= 0.0f || object.alphaCoverage) {
       const uint32_t crossings = object.countHits(local, tMax);
       if (crossings == 0) continue;

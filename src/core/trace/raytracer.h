@@ -32,6 +32,7 @@
 #include "core/scene/scene.h"
 #include "core/trace/bvh.h"
 #include "core/trace/ray.h"
+#include "core/trace/trace_shapes.h"
 #include "core/trace/trace_textures.h"
 
 namespace shadelab {
@@ -160,6 +161,10 @@ class RayTracer {
 
  private:
   struct TracedObject;
+  // The object's nearest hit in (tMin, tMax) that a glTF MASK cut-out keeps
+  // (cutAway, trace_material.h); false if none.
+  bool nearestKeptHit(const TracedObject& object, const Ray& local, float tMin, float tMax,
+                      LocalHit& hit, glm::vec3& geometric) const;
   glm::vec3 shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth, float weight,
                   const TraceSettings& settings, TraceStats& stats, RayCone cone) const;
   // The material at a hit with its textures applied (the diffuse texel,

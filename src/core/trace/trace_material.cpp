@@ -23,6 +23,19 @@ float levelOfDetail(const Lookup& lookup, const TraceTexture& texture) {
   return longest > 0.0f ? std::log2(longest) : 0.0f;
 }
 
+// KHR_texture_transform on a lookup: st' = T(offset) R(rotation) S(scale) st
+// (shaders/uv_transform.glsl's matrices), and its rates through the linear part.
+Lookup transformed(const Lookup& lookup, const UvTransform& transform) {
+  if (transform.identity()) return lookup;
+  const float c = std::cos(transform.rotation), s = std::sin(transform.rotation);
+  auto linear = [&](glm::vec2 v) {
+    const glm::vec2 scaled = v * transform.scale;
+    return glm::vec2(c * scaled.x + s * scaled.y, c * scaled.y - s * scaled.x);
+  };
+  return {linear(lookup.st) + transform.offset, linear(lookup.stPerAlong),
+          linear(lookup.stPerAcross)};
+}
+
 glm::vec4 sampleAt(const TraceTexture& texture, const TextureSlot& slot, const Lookup& lookup,
                    glm::vec2 offset = glm::vec2(0.0f)) {
   return texture.sample(lookup.st + offset, levelOfDetail(lookup, texture), slot.sampler);
@@ -75,12 +88,15 @@ Material texturedMaterial(const Material& material, const std::vector<TraceTextu
   Material result = material;
   const glm::vec2 scale = material.uvScale * glm::vec2(1.0f, -1.0f);  // t = 1 - v sy
   const float alongLength = footprint / std::max(cosine, 1e-4f);
-  const Lookup lookup{textureCoordinate(frame.uv, material.uvScale),
-                      frame.uvPerAlong * scale * alongLength,
-                      frame.uvPerAcross * scale * footprint};
+  const Lookup untransformed{textureCoordinate(frame.uv, material.uvScale),
+                             frame.uvPerAlong * scale * alongLength,
+                             frame.uvPerAcross * scale * footprint};
+  // The normal map's transform serves the height map too, as in the shaders.
+  const Lookup lookup = transformed(untransformed, material.normalMap.transform);
   if (material.diffuseMap.present()) {
-    const glm::vec3 texel(
-        sampleAt(textures[size_t(material.diffuseMap.texture)], material.diffuseMap, lookup));
+    const glm::vec3 texel(sampleAt(textures[size_t(material.diffuseMap.texture)],
+                                   material.diffuseMap,
+                                   transformed(untransformed, material.diffuseMap.transform)));
     result.ka *= texel;
     result.kd *= texel;
   }
@@ -105,6 +121,17 @@ Material texturedMaterial(const Material& material, const std::vector<TraceTextu
   const glm::vec3 bumped = tangent * n.x + bitangent * n.y + normal * n.z;
   if (glm::length(bumped) > 0.0f) normal = glm::normalize(bumped);
   return result;
+}
+
+bool cutAway(const Material& material, const std::vector<TraceTexture>& textures, glm::vec2 uv) {
+  if (!(material.alphaCutoff > 0.0f)) return false;
+  // alpha x texel < cutoff, as the shaders compare texel < cutoff / alpha.
+  const float threshold = material.alpha > 0.0f ? material.alphaCutoff / material.alpha : 2.0f;
+  if (!material.diffuseMap.present()) return threshold > 1.0f;
+  const Lookup lookup =
+      transformed({textureCoordinate(uv, material.uvScale), {}, {}}, material.diffuseMap.transform);
+  const TraceTexture& texture = textures[size_t(material.diffuseMap.texture)];
+  return texture.sample(lookup.st, 0.0f, material.diffuseMap.sampler).a < threshold;
 }
 
 }  // namespace shadelab

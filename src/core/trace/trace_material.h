@@ -1,6 +1,8 @@
 #pragma once
 // Textured materials at a traced hit: the diffuse texel (it scales ka and
-// kd, as in shaders/forward_fragment.glsl) and the bump-mapped normal
+// kd, as in shaders/forward_fragment.glsl), each map looked up through its
+// KHR_texture_transform (shaders/uv_transform.glsl: the diffuse map's, and
+// the normal map's for the normal and height maps), and the bump-mapped normal
 // (shaders/bump.glsl: tangent-space normal maps and height maps, whiteout
 // blending), both looked up at a level of detail from the ray's footprint.
 //
@@ -37,5 +39,12 @@ void tangentPlaneAxes(glm::vec3 normal, glm::vec3 incident, glm::vec3& along, gl
 // map. `footprint` is the cone's width at the hit, `cosine` |N.incident|.
 Material texturedMaterial(const Material& material, const std::vector<TraceTexture>& textures,
                           const UvFrame& frame, float footprint, float cosine, glm::vec3& normal);
+
+// glTF alphaMode MASK (Material::alphaCutoff): whether the surface at `uv` is
+// cut away, its alpha (the factor's times the diffuse texel's) below the
+// cut-off. The texel is the base level's: the surface's own outline, which
+// supersampling filters, where the rasteriser tests the mip level a pixel's
+// footprint picks (shaders/forward_fragment.glsl).
+bool cutAway(const Material& material, const std::vector<TraceTexture>& textures, glm::vec2 uv);
 
 }  // namespace shadelab
