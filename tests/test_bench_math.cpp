@@ -75,6 +75,45 @@ TEST(Chart, DrawsEachSeriesInItsColourOnWhitePaper) {
   EXPECT_LT(pixelsOfColor(drawChart(without, 600, 400), glm::vec3(0, 0, 1)), 1u);
 }
 
+// A subtitle wider than the panel wraps onto more lines and the plot moves
+// down to make room (study acne's subtitle ran off the image). The frame's
+// top edge: the first row that is dark across most of the plot's width. The
+// twin: a subtitle that fits leaves the frame where it was.
+TEST(Chart, LongSubtitleWrapsAndPushesThePlotDown) {
+  auto frameTop = [](const ImageU8& image) {
+    for (uint32_t y = 0; y < image.height; ++y) {
+      uint32_t dark = 0;
+      for (uint32_t x = 0; x < image.width; ++x) dark += image.at(x, y).r < 80;
+      if (dark > image.width / 3) return y;
+    }
+    return image.height;
+  };
+  auto darkRows = [](const ImageU8& image, uint32_t below) {
+    uint32_t rows = 0;
+    for (uint32_t y = 0; y < below; ++y)
+      for (uint32_t x = 0; x < image.width; ++x)
+        if (image.at(x, y).r < 80) {
+          ++rows;
+          break;
+        }
+    return rows;
+  };
+  Chart shortSubtitle{"title", "one short line", {"x"}, {"y"}};
+  shortSubtitle.series.push_back({"a", glm::vec3(1, 0, 0), {{1, 1, ""}, {2, 2, ""}}, true});
+  Chart longSubtitle = shortSubtitle;
+  longSubtitle.subtitle =
+      "acne: lit points drawn shadowed; leak: shadowed points drawn lit; epsilon 0 (off the log "
+      "axis): 85.3% acne, and then some more words that could never fit on one line of this chart";
+  ImageU8 fits = drawChart(shortSubtitle, 600, 400), wraps = drawChart(longSubtitle, 600, 400);
+  EXPECT_GE(frameTop(wraps), frameTop(fits) + 2 * 16);  // two more lines of 16 pixels
+  // The text above the frame covers more rows: the extra lines are drawn.
+  EXPECT_GT(darkRows(wraps, frameTop(wraps)), darkRows(fits, frameTop(fits)) + 16);
+  // No dark pixel in the last 4 columns: nothing runs off the right edge.
+  for (uint32_t y = 0; y < frameTop(wraps); ++y)
+    for (uint32_t x = wraps.width - 4; x < wraps.width; ++x)
+      EXPECT_GE(wraps.at(x, y).r, 80) << x << ", " << y;
+}
+
 // A point label keeps off the lines: on a flat line (bench's "--lod off"
 // reference line) the label of its first point used to sit across the line.
 // The twins: without the line boxes the label lands on the line (onLine

@@ -46,6 +46,34 @@ Rect textRect(const std::string& text, int size, int x, int baseline) {
   return {x + box.xBegin, baseline + box.yBegin, x + box.xEnd, baseline + box.yEnd};
 }
 
+// `text` broken at spaces into lines no wider than `width` pixels (a word
+// longer than that gets a line of its own).
+std::vector<std::string> wrapText(const std::string& text, int size, int width) {
+  std::vector<std::string> lines;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.size();
+    auto fits = [&](size_t to) {
+      Rect rect = textRect(text.substr(start, to - start), size, 0, 0);
+      return rect.x1 - rect.x0 <= width;
+    };
+    if (!fits(end)) {
+      // The last space before the line overflows (or the first, for one long word).
+      size_t space = text.find(' ', start);
+      size_t cut = space == std::string::npos ? end : space;
+      for (size_t next = space; next != std::string::npos && fits(next);
+           next = text.find(' ', next + 1))
+        cut = next;
+      end = cut;
+    }
+    lines.push_back(text.substr(start, end - start));
+    start = end;
+    while (start < text.size() && text[start] == ' ') ++start;
+  }
+  return lines;
+}
+constexpr int kSubtitleLineHeight = 16;
+
 std::string tickText(double value) {
   char text[32];
   if (value != 0.0 && (std::abs(value) >= 1e7 || std::abs(value) < 1e-3))
@@ -129,8 +157,9 @@ void drawVerticalText(Canvas& image, int centerX, int centerY, const std::string
   image.paste(centerX - height / 2, centerY - width / 2, *turned);
 }
 
-void drawAxes(Canvas& image, const Chart& chart, const Mapping& mx, const Mapping& my, int plotLeft,
-              int plotTop, int plotRight, int plotBottom) {
+void drawAxes(Canvas& image, const Chart& chart, const std::vector<std::string>& subtitle,
+              const Mapping& mx, const Mapping& my, int plotLeft, int plotTop, int plotRight,
+              int plotBottom) {
   // A tick can fall just outside the plot when the range was widened with
   // another tick step; OpenImageIO aborts on text placed off the image.
   for (double tick : axisTicks(mx.low, mx.high, chart.x.scale)) {
@@ -153,7 +182,9 @@ void drawAxes(Canvas& image, const Chart& chart, const Mapping& mx, const Mappin
            AlignX::Center);
   drawVerticalText(image, plotLeft - kMarginLeft + 16, (plotTop + plotBottom) / 2, chart.y.label);
   drawText(image, plotLeft, 22, chart.title, kTitleSize, kInk);
-  drawText(image, plotLeft, 38, chart.subtitle, kTickSize, kInk);
+  for (size_t line = 0; line < subtitle.size(); ++line)
+    drawText(image, plotLeft, 38 + kSubtitleLineHeight * int(line), subtitle[line], kTickSize,
+             kInk);
 }
 
 void drawLegend(Canvas& image, const Chart& chart, int left, int top) {
@@ -172,7 +203,11 @@ void drawLegend(Canvas& image, const Chart& chart, int left, int top) {
 
 void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, int height) {
   int plotLeft = originX + kMarginLeft, plotRight = originX + width - kMarginRight;
-  int plotTop = kMarginTop, plotBottom = height - kMarginBottom;
+  // A subtitle wider than the panel wraps; the plot starts below its lines.
+  std::vector<std::string> subtitle =
+      wrapText(chart.subtitle, kTickSize, originX + width - 8 - plotLeft);
+  int plotTop = kMarginTop + kSubtitleLineHeight * std::max(0, int(subtitle.size()) - 1);
+  int plotBottom = height - kMarginBottom;
   double minX = std::numeric_limits<double>::infinity(), maxX = -minX;
   double minY = minX, maxY = -minX;
   for (const ChartSeries& series : chart.series)
@@ -185,7 +220,7 @@ void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, in
   auto [lowY, highY] = axisRange(chart.y, minY, maxY);
   Mapping mx{lowX, highX, chart.x.scale, plotLeft, plotRight};
   Mapping my{lowY, highY, chart.y.scale, plotBottom, plotTop};
-  drawAxes(image, chart, mx, my, plotLeft, plotTop, plotRight, plotBottom);
+  drawAxes(image, chart, subtitle, mx, my, plotLeft, plotTop, plotRight, plotBottom);
 
   // Marks may reach a little past the frame, so points on an axis stay visible.
   Clip clip{plotLeft - 8, plotRight + 9, plotTop - 8, plotBottom + 9};
