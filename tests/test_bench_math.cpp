@@ -9,6 +9,7 @@
 #include "core/metrics/chart.h"
 #include "core/metrics/error_metric.h"
 #include "core/metrics/pareto.h"
+#include "core/metrics/sheet.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/scene_loader.h"
 #include "core/vulkan/depth.h"
@@ -112,6 +113,29 @@ TEST(Chart, LongSubtitleWrapsAndPushesThePlotDown) {
   for (uint32_t y = 0; y < frameTop(wraps); ++y)
     for (uint32_t x = wraps.width - 4; x < wraps.width; ++x)
       EXPECT_GE(wraps.at(x, y).r, 80) << x << ", " << y;
+}
+
+// A sheet's titles and lines wrap to their cell's width: with 64-pixel
+// images, "gouraud vs reference" used to run across the next column. The
+// 8-pixel gaps between the cells stay free of text (light pixels), and the
+// sheet grows taller for the extra lines. Twin: the same sheet with images
+// wide enough for the text is no taller than one line each needs.
+TEST(Sheet, TitlesAndLinesWrapToTheCellWidth) {
+  auto sheetOf = [](uint32_t cellWidth) {
+    ImageU8 black(cellWidth, 20);
+    for (size_t i = 3; i < black.pixels.size(); i += 4) black.pixels[i] = 255;
+    std::vector<std::vector<SheetCell>> rows(1);
+    for (const char* title : {"gouraud vs reference", "blinn-phong vs reference"})
+      rows[0].push_back({black, title, {"RMSE 4.619  PSNR 34.84 dB", "SSIM 0.9759  FLIP 0.0315"}});
+    return composeSheet(rows);
+  };
+  ImageU8 narrow = sheetOf(64), wide = sheetOf(400);
+  EXPECT_GT(narrow.height, wide.height + 40u) << "two more title lines and two more lines";
+  // The gap after the first cell: x from 8 + 64 to 8 + 64 + 8.
+  size_t inGap = 0;
+  for (uint32_t y = 0; y < narrow.height; ++y)
+    for (uint32_t x = 8 + 64; x < 8 + 64 + 8; ++x) inGap += narrow.at(x, y).r > 128;
+  EXPECT_EQ(inGap, 0u);
 }
 
 // A point label keeps off the lines: on a flat line (bench's "--lod off"

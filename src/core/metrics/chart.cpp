@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/base/oiio_module.h"
+#include "core/metrics/text_wrap.h"
 
 namespace shadelab {
 namespace {
@@ -46,32 +47,6 @@ Rect textRect(const std::string& text, int size, int x, int baseline) {
   return {x + box.xBegin, baseline + box.yBegin, x + box.xEnd, baseline + box.yEnd};
 }
 
-// `text` broken at spaces into lines no wider than `width` pixels (a word
-// longer than that gets a line of its own).
-std::vector<std::string> wrapText(const std::string& text, int size, int width) {
-  std::vector<std::string> lines;
-  size_t start = 0;
-  while (start < text.size()) {
-    size_t end = text.size();
-    auto fits = [&](size_t to) {
-      Rect rect = textRect(text.substr(start, to - start), size, 0, 0);
-      return rect.x1 - rect.x0 <= width;
-    };
-    if (!fits(end)) {
-      // The last space before the line overflows (or the first, for one long word).
-      size_t space = text.find(' ', start);
-      size_t cut = space == std::string::npos ? end : space;
-      for (size_t next = space; next != std::string::npos && fits(next);
-           next = text.find(' ', next + 1))
-        cut = next;
-      end = cut;
-    }
-    lines.push_back(text.substr(start, end - start));
-    start = end;
-    while (start < text.size() && text[start] == ' ') ++start;
-  }
-  return lines;
-}
 constexpr int kSubtitleLineHeight = 16;
 
 std::string tickText(double value) {
@@ -205,7 +180,7 @@ void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, in
   int plotLeft = originX + kMarginLeft, plotRight = originX + width - kMarginRight;
   // A subtitle wider than the panel wraps; the plot starts below its lines.
   std::vector<std::string> subtitle =
-      wrapText(chart.subtitle, kTickSize, originX + width - 8 - plotLeft);
+      wrapText(chart.subtitle, kTickSize, kFont, originX + width - 8 - plotLeft);
   int plotTop = kMarginTop + kSubtitleLineHeight * std::max(0, int(subtitle.size()) - 1);
   int plotBottom = height - kMarginBottom;
   double minX = std::numeric_limits<double>::infinity(), maxX = -minX;
