@@ -138,6 +138,30 @@ TEST(Sheet, TitlesAndLinesWrapToTheCellWidth) {
   EXPECT_EQ(inGap, 0u);
 }
 
+// An axis's own ticks replace the automatic ones (the shadow-bias study
+// labels ranks 0..7 with its bias values). Counted as the grid's vertical
+// lines strictly inside the frame: the automatic ticks of data over 0..7
+// (steps of 1) give 6; ticks given at 0, 3.5 and 7 give 1.
+TEST(Chart, AxisTicksGivenReplaceTheAutomaticOnes) {
+  auto innerGridColumns = [](const ImageU8& image) {
+    const glm::u8vec4 grid(224, 224, 230, 255);
+    uint32_t columns = 0;
+    for (uint32_t x = 0; x < image.width; ++x) {
+      uint32_t count = 0;
+      for (uint32_t y = 0; y < image.height; ++y) count += image.at(x, y) == grid;
+      columns += count > image.height / 3;
+    }
+    return columns;
+  };
+  Chart chart{"title", "subtitle", {"x"}, {"y"}};
+  chart.series.push_back({"a", glm::vec3(1, 0, 0), {}, true});
+  for (int rank = 0; rank < 8; ++rank)
+    chart.series[0].points.push_back({double(rank), double(rank % 3), ""});
+  EXPECT_EQ(innerGridColumns(drawChart(chart, 600, 400)), 6u);
+  chart.x.ticks = {{0.0, "none"}, {3.5, "half"}, {7.0, "all"}};
+  EXPECT_EQ(innerGridColumns(drawChart(chart, 600, 400)), 1u);
+}
+
 // A point label keeps off the lines: on a flat line (bench's "--lod off"
 // reference line) the label of its first point used to sit across the line.
 // The twins: without the line boxes the label lands on the line (onLine

@@ -162,8 +162,25 @@ ImageU8 biasStudyChart(const std::vector<BiasStudyRow>& rows) {
       chart.title = lightKind + " light: " + (acne ? "acne" : "peter-panning");
       chart.subtitle = acne ? "% of truly lit pixels drawn shadowed"
                             : "% of truly shadowed pixels near contact drawn lit";
-      chart.x.label = "bias (texels; default-scaled: x default)";
+      chart.x.label = "bias in texels (default-scaled: x default)";
       chart.y.label = "percent";
+      // The sweep doubles the bias from 0.25 (and starts at 0): its values
+      // evenly spaced by their rank, labelled with the value, so the steps
+      // below one texel, where acne goes, get as much room as the rest.
+      std::vector<float> values;
+      for (const BiasStudyRow& row : rows)
+        if (row.lightKind == lightKind &&
+            std::find(values.begin(), values.end(), row.value) == values.end())
+          values.push_back(row.value);
+      std::sort(values.begin(), values.end());
+      auto rank = [&](float value) {
+        return double(std::lower_bound(values.begin(), values.end(), value) - values.begin());
+      };
+      for (float value : values) {
+        char label[16];
+        std::snprintf(label, sizeof label, "%g", double(value));
+        chart.x.ticks.push_back({rank(value), label});
+      }
       std::vector<std::string> kinds;
       for (const BiasStudyRow& row : rows)
         if (row.lightKind == lightKind &&
@@ -174,14 +191,14 @@ ImageU8 biasStudyChart(const std::vector<BiasStudyRow>& rows) {
         for (const BiasStudyRow& row : rows)
           if (row.lightKind == lightKind && row.biasKind == kinds[k])
             series.points.push_back(
-                {double(row.value),
+                {rank(row.value),
                  100.0 * (acne ? row.errors.acneFraction() : row.errors.peterPanningFraction()),
                  ""});
         chart.series.push_back(series);
       }
       charts.push_back(chart);
     }
-  return drawChartRow(charts, 420, 340);
+  return drawChartRow(charts, 560, 340);
 }
 
 }  // namespace shadelab

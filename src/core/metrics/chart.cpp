@@ -73,6 +73,15 @@ struct Mapping {
   }
 };
 
+// The axis's own ticks, or the automatic ones over the mapped range.
+std::vector<ChartTick> ticksOf(const ChartAxis& axis, const Mapping& mapping) {
+  if (!axis.ticks.empty()) return axis.ticks;
+  std::vector<ChartTick> ticks;
+  for (double value : axisTicks(mapping.low, mapping.high, axis.scale))
+    ticks.push_back({value, tickText(value)});
+  return ticks;
+}
+
 // The axis range: the data's, widened to whole ticks.
 std::pair<double, double> axisRange(const ChartAxis& axis, double low, double high) {
   if (axis.scale == AxisScale::Log) {
@@ -137,20 +146,19 @@ void drawAxes(Canvas& image, const Chart& chart, const std::vector<std::string>&
               int plotBottom) {
   // A tick can fall just outside the plot when the range was widened with
   // another tick step; OpenImageIO aborts on text placed off the image.
-  for (double tick : axisTicks(mx.low, mx.high, chart.x.scale)) {
-    int x = int(std::lround(mx(tick)));
+  for (const ChartTick& tick : ticksOf(chart.x, mx)) {
+    int x = int(std::lround(mx(tick.value)));
     if (x < plotLeft || x > plotRight) continue;
     image.line(x, plotTop, x, plotBottom, kGrid, std::nullopt);
     image.line(x, plotBottom, x, plotBottom + 5, kInk, std::nullopt);
-    drawText(image, x, plotBottom + 20, tickText(tick), kTickSize, kInk, AlignX::Center);
+    drawText(image, x, plotBottom + 20, tick.label, kTickSize, kInk, AlignX::Center);
   }
-  for (double tick : axisTicks(my.low, my.high, chart.y.scale)) {
-    int y = int(std::lround(my(tick)));
+  for (const ChartTick& tick : ticksOf(chart.y, my)) {
+    int y = int(std::lround(my(tick.value)));
     if (y < plotTop || y > plotBottom) continue;
     image.line(plotLeft, y, plotRight, y, kGrid, std::nullopt);
     image.line(plotLeft - 5, y, plotLeft, y, kInk, std::nullopt);
-    drawText(image, plotLeft - 8, y, tickText(tick), kTickSize, kInk, AlignX::Right,
-             AlignY::Center);
+    drawText(image, plotLeft - 8, y, tick.label, kTickSize, kInk, AlignX::Right, AlignY::Center);
   }
   image.box(plotLeft, plotTop, plotRight, plotBottom, kInk);
   drawText(image, (plotLeft + plotRight) / 2, plotBottom + 46, chart.x.label, kAxisLabelSize, kInk,

@@ -30,10 +30,18 @@ struct ChartSeries {
 
 enum class AxisScale { Linear, Log };
 
+struct ChartTick {
+  double value = 0.0;
+  std::string label;
+};
+
 struct ChartAxis {
   std::string label;
   AxisScale scale = AxisScale::Linear;
   std::optional<double> min, max;  // default: the data's range (linear axes include 0 if close)
+  // Ticks to draw instead of the automatic ones (e.g. the values a sweep
+  // took, evenly spaced by their index: an ordinal axis); empty: automatic.
+  std::vector<ChartTick> ticks;
 };
 
 struct Chart {
