@@ -252,6 +252,30 @@ TEST(RayTracer, MaskCutsAwayWhereAlphaIsBelowTheCutoff) {
   EXPECT_FALSE(RayTracer(scene).intersect({{-0.5f, 2.0f, -0.5f}, {0, -1, 0}}, 0.0f, kInf));
 }
 
+// A plane seen from below shows its back face. The rasteriser culls it
+// unless the material is double-sided, so camera rays pass it too; other
+// rays (a reflection, a shadow ray) still meet it, and glass keeps its back
+// faces, where refracted rays leave it.
+TEST(RayTracer, CameraRaysPassTheBackFacesTheRasteriserCulls) {
+  ShapeDesc plane{ShapeKind::Plane};
+  plane.size = 4.0f;
+  Scene scene = oneObject(plane, glm::mat4(1.0f));
+  const Ray up{{0.3f, -2.0f, 0.1f}, {0, 1, 0}};
+  auto hits = [&](bool cameraRay) {
+    return RayTracer(scene).intersect(up, 0.0f, kInf, cameraRay).has_value();
+  };
+  EXPECT_FALSE(hits(true));
+  EXPECT_TRUE(hits(false));
+  EXPECT_FLOAT_EQ(RayTracer(scene).transmittance(up, kInf), 0.0f);
+  const Ray down{{0.3f, 2.0f, 0.1f}, {0, -1, 0}};
+  EXPECT_TRUE(RayTracer(scene).intersect(down, 0.0f, kInf, true).has_value()) << "front face";
+  scene.objects[0].material.doubleSided = true;
+  EXPECT_TRUE(hits(true));
+  scene.objects[0].material.doubleSided = false;
+  scene.objects[0].material.transparency = 0.8f;
+  EXPECT_TRUE(hits(true)) << "glass";
+}
+
 TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
   ShapeDesc sphere{ShapeKind::Icosphere};
   sphere.radius = 1.0f;

@@ -116,6 +116,8 @@ TEST(TraceStability, CameraInsideASphereSeesItsLitOrUnlitInside) {
   scene.camera.at = {0, 0, -1};
   scene.ambient = glm::vec3(0.5f);
   Material wall{glm::vec3(0.2f, 0.3f, 0.4f), glm::vec3(0.7f), glm::vec3(0.3f), 16.0f};
+  // Seen from inside, as a double-sided surface (a single-sided one is culled: below).
+  wall.doubleSided = true;
   scene.objects.push_back({"room", scene.addShape(sphereShape(2.0f)), glm::mat4(1.0f), wall});
   scene.lights.push_back({LightType::Point, {0, 5, 0}, {}, glm::vec3(1.0f), {1, 0, 0}});
   TraceSettings settings;
@@ -140,6 +142,13 @@ TEST(TraceStability, CameraInsideASphereSeesItsLitOrUnlitInside) {
       brighter += c.g > ambient.g + 0.05f;
     }
   EXPECT_EQ(brighter, settings.width * settings.height);
+  // Single-sided, the inside is all back faces: the camera rays pass them as
+  // the rasteriser culls them, and every pixel is the background.
+  scene.objects[0].material.doubleSided = false;
+  ImageRgba culled = RayTracer(scene).render(settings).image;
+  for (uint32_t y = 0; y < settings.height; ++y)
+    for (uint32_t x = 0; x < settings.width; ++x)
+      EXPECT_EQ(glm::vec3(culled.at(x, y)), scene.background) << x << "," << y;
 }
 
 TEST(TraceStability, CollapsedObjectsAreNotThereAndLeaveNoNaN) {

@@ -179,20 +179,22 @@ TEST_F(TraceEnvironment, TexturedSceneAgreesWithTheRasteriser) {
   EXPECT_GT(swapped, same + 0.005);
 }
 
-// glTF's alphaMode MASK and KHR_texture_transform in the traced reference
-// (tests/data: alpha_mask.gltf's checker-holed quad over a floor,
-// texture_transform.gltf's offset/rotated/scaled base colour and shifted
-// normal map), traced at pixel centres without shadows against raster Phong
-// with bilinear filtering (the tracer filters by area, whatever the
-// sampler): the features agree when the FLIP is small, and the tracer with
-// the feature undone (the mask dropped, the transforms reset) must be
-// clearly worse.
+// glTF's alphaMode MASK, KHR_texture_transform and single-sided culling in
+// the traced reference (tests/data: alpha_mask.gltf's checker-holed quad
+// over a floor, texture_transform.gltf's offset/rotated/scaled base colour
+// and shifted normal map, double_sided.gltf's two quads seen from behind,
+// one of them single-sided), traced at pixel centres without shadows
+// against raster Phong with bilinear filtering (the tracer filters by area,
+// whatever the sampler): the features agree when the FLIP is small, and the
+// tracer with the feature undone (the mask dropped, the transforms reset,
+// every surface double-sided) must be clearly worse.
 double gltfFeatureFlip(Renderer& renderer, const std::string& file, bool undo) {
   const Scene scene = loadScene(std::string(SHADELAB_TEST_DATA_DIR) + "/" + file);
   Scene traced = scene;
   if (undo)
     for (Object& object : traced.objects) {
       object.material.alphaCutoff = 0.0f;
+      object.material.doubleSided = true;
       object.material.diffuseMap.transform = {};
       object.material.normalMap.transform = {};
     }
@@ -205,8 +207,8 @@ double gltfFeatureFlip(Renderer& renderer, const std::string& file, bool undo) {
       .mean;
 }
 
-TEST_F(TraceEnvironment, GltfMaskAndTextureTransformAgreeWithTheRasteriser) {
-  for (const char* file : {"alpha_mask.gltf", "texture_transform.gltf"}) {
+TEST_F(TraceEnvironment, GltfMaskTextureTransformAndCullingAgreeWithTheRasteriser) {
+  for (const char* file : {"alpha_mask.gltf", "texture_transform.gltf", "double_sided.gltf"}) {
     const double same = gltfFeatureFlip(renderer(), file, false);
     const double undone = gltfFeatureFlip(renderer(), file, true);
     std::printf("%s, raster Phong vs trace: mean FLIP %.4f; tracer without the feature %.4f\n",

@@ -66,7 +66,7 @@ AcneMeasurement measureAcne(const Scene& scene, float epsilon, uint32_t width, u
   for (uint32_t y = 0; y < height; ++y)
     for (uint32_t x = 0; x < width; ++x) {
       std::optional<SurfaceHit> hit =
-          tracer.intersect(rays.through(float(x) + 0.5f, float(y) + 0.5f), 0.0f, 1.0f);
+          tracer.intersect(rays.through(float(x) + 0.5f, float(y) + 0.5f), 0.0f, 1.0f, true);
       if (!hit) continue;
       const bool onSphere = hit->object == 1;
       std::optional<bool> truth = trulyLit(hit->position, hit->shadingNormal, toLight, onSphere);

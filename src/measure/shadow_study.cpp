@@ -38,7 +38,7 @@ ShadowTruth traceShadowTruth(const Scene& scene, uint32_t lightIndex, uint32_t w
     for (uint32_t x = 0; x < width; ++x) {
       size_t p = size_t(y) * width + x;
       std::optional<SurfaceHit> hit =
-          tracer.intersect(camera.through(float(x) + 0.5f, float(y) + 0.5f), 0.0f, 1.0f);
+          tracer.intersect(camera.through(float(x) + 0.5f, float(y) + 0.5f), 0.0f, 1.0f, true);
       if (!hit) continue;
       object[p] = int32_t(hit->object);
       bool point = light.type == LightType::Point;

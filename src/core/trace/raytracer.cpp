@@ -326,17 +326,24 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
 RayTracer::~RayTracer() = default;
 
 bool RayTracer::nearestKeptHit(const TracedObject& object, const Ray& local, float tMin, float tMax,
-                               LocalHit& hit, glm::vec3& geometric) const {
+                               bool cullBackFaces, LocalHit& hit, glm::vec3& geometric) const {
   const Material& material = scene_.objects[object.sceneObject].material;
+  const bool culled = cullBackFaces && !material.doubleSided &&
+                      (object.transparency <= 0.0f || object.alphaCoverage);
+  if (!culled && !(material.alphaCutoff > 0.0f))
+    return object.intersect(local, tMin, tMax, hit, geometric);
   for (int layer = 0; layer < kMaxCutAwayLayers; ++layer) {
     if (!object.intersect(local, tMin, tMax, hit, geometric)) return false;
-    if (!cutAway(material, textures_, object.hitUv(local, hit, geometric))) return true;
+    const bool backFace = glm::dot(local.direction, geometric) > 0.0f;
+    if (!(culled && backFace) && !cutAway(material, textures_, object.hitUv(local, hit, geometric)))
+      return true;
     tMin = std::nextafter(hit.t, kInfinity);
   }
   return false;
 }
 
-std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float tMax) const {
+std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float tMax,
+                                               bool cameraRay) const {
   const glm::vec3 inverse = 1.0f / ray.direction;
   LocalHit best;
   glm::vec3 bestGeometric{0.0f};
@@ -349,7 +356,7 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, float tMin, float
     LocalHit hit;
     glm::vec3 geometric;
     const Ray local = object.toLocal(ray);
-    if (!nearestKeptHit(object, local, tMin, tMax, hit, geometric)) continue;
+    if (!nearestKeptHit(object, local, tMin, tMax, cameraRay, hit, geometric)) continue;
     best = hit;
     bestLocal = local;
     bestGeometric = geometric;
@@ -392,7 +399,8 @@ float RayTracer::transmittance(const Ray& ray, float tMax, bool fresnel) const {
       // A cut-out: each crossing the cut keeps blocks (or passes kt).
       LocalHit hit;
       glm::vec3 geometric;
-      for (float from = 0.0f; nearestKeptHit(object, local, from, tMax, hit, geometric);
+      // Shadow rays see both faces, as the shadow maps draw both.
+      for (float from = 0.0f; nearestKeptHit(object, local, from, tMax, false, hit, geometric);
            from = std::nextafter(hit.t, kInfinity)) {
         if (object.transparency <= 0.0f) return 0.0f;
         passed *= object.transparency;
@@ -552,7 +560,7 @@ glm::vec3 RayTracer::traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint
                               float weight, const TraceSettings& settings, TraceStats& stats,
                               RayCone cone) const {
   ++(depth == 0 ? stats.primaryRays : stats.secondaryRays);
-  std::optional<SurfaceHit> hit = intersect(ray, 0.0f, tMax);
+  std::optional<SurfaceHit> hit = intersect(ray, 0.0f, tMax, depth == 0);
   if (!hit) return missColour(scene_, ray.direction);
   return shade(ray, *hit, viewer, depth, weight, settings, stats, cone);
 }

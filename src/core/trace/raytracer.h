@@ -153,7 +153,12 @@ class RayTracer {
   // `cone` its footprint for texture filtering.
   glm::vec3 traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth, float weight,
                      const TraceSettings& settings, TraceStats& stats, RayCone cone = {}) const;
-  std::optional<SurfaceHit> intersect(const Ray& ray, float tMin, float tMax) const;
+  // The nearest hit for tMin < t < tMax. A camera ray (`cameraRay`) passes
+  // the back faces of single-sided surfaces, as the rasteriser culls them
+  // (Material::doubleSided); reflected, refracted and shadow rays see both
+  // sides, Whitted's surfaces having no counterpart in the rasteriser.
+  std::optional<SurfaceHit> intersect(const Ray& ray, float tMin, float tMax,
+                                      bool cameraRay = false) const;
   // k_shadow: the fraction of light passing from `origin` along `direction`
   // for 0 < t < tMax: 0 behind an opaque surface, otherwise the product over
   // the surfaces crossed of kt (1 - F), or of kt alone without `fresnel`.
@@ -162,9 +167,11 @@ class RayTracer {
  private:
   struct TracedObject;
   // The object's nearest hit in (tMin, tMax) that a glTF MASK cut-out keeps
-  // (cutAway, trace_material.h); false if none.
+  // (cutAway, trace_material.h) and, with `cullBackFaces`, that is not the
+  // back face of a single-sided surface the rasteriser culls (opaque or glTF
+  // BLEND coverage: glass keeps the back faces rays leave it by); false if none.
   bool nearestKeptHit(const TracedObject& object, const Ray& local, float tMin, float tMax,
-                      LocalHit& hit, glm::vec3& geometric) const;
+                      bool cullBackFaces, LocalHit& hit, glm::vec3& geometric) const;
   glm::vec3 shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth, float weight,
                   const TraceSettings& settings, TraceStats& stats, RayCone cone) const;
   // The material at a hit with its textures applied (the diffuse texel,

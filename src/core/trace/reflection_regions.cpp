@@ -24,7 +24,7 @@ Ray leaving(const SurfaceHit& hit, glm::vec3 direction) {
 }
 
 ReflectionRegion classify(const Scene& scene, const RayTracer& tracer, const Ray& camera) {
-  std::optional<SurfaceHit> hit = tracer.intersect(camera, 0.0f, 1.0f);
+  std::optional<SurfaceHit> hit = tracer.intersect(camera, 0.0f, 1.0f, true);
   if (!hit) return ReflectionRegion::None;
   const Material& material = scene.objects[hit->object].material;
   if (material.reflectivity <= 0.0f && material.transparency <= 0.0f) return ReflectionRegion::None;
