@@ -79,6 +79,28 @@ TEST_F(Sequences, FailedRunKeepsTheEarlierRunsFiles) {
   EXPECT_EQ(filesLeft(), 4u);  // three frames and the folder: no staged files
 }
 
+// The same when the last step fails: frame 2's name becomes a folder after
+// its check passed, while the sequence is still drawing, so the final
+// renames fail at frame 2 after frame 1 has replaced the earlier file. That
+// file is put back and no new or staged file stays.
+TEST_F(Sequences, RenameFailingAtTheEndPutsTheEarlierFilesBack) {
+  ASSERT_EQ(run("render default -o " + out("spin-0001.png") + kSmall).exitCode, 0);
+  auto bytes = [&](const std::string& name) {
+    std::ifstream in(dir / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string earlier = bytes("spin-0001.png");
+  const std::string folder = (dir / "spin-0002.png").string();
+  CommandResult r = run("render default --turntable 400 --size 320x180 -o " + out("spin.png") +
+                        " 2>&1 & pid=$!; for i in $(seq 3000); do ls -A " + dir.string() +
+                        " | grep -q 'spin-0002-staged' && break; sleep 0.01; done; mkdir " +
+                        folder + "; wait $pid");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("cannot write '" + folder + "'"), std::string::npos) << r.output;
+  EXPECT_TRUE(bytes("spin-0001.png") == earlier) << "frame 1 is not the earlier file";
+  EXPECT_EQ(filesLeft(), 2u);  // the earlier frame and the folder
+}
+
 // A half turn of the default camera about the up axis through the look-at
 // point puts the eye at (2 at.x - eye.x, eye.y, 2 at.z - eye.z): frame 3 of 4
 // is the single render of that camera.

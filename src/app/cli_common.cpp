@@ -1,5 +1,8 @@
 #include "app/cli_common.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -199,15 +202,49 @@ void OutputGroup::add(const std::filesystem::path& path,
 }
 
 void OutputGroup::keep() {
+  namespace fs = std::filesystem;
+  // An earlier run's file under a target's name is kept aside (a hard link
+  // under a hidden name) until every staged file is in place: a rename that
+  // fails part-way puts the earlier files back, so the targets hold all of
+  // this run's files or none. Where no link can be made (a file system
+  // without them) the earlier file is replaced unguarded.
+  std::vector<fs::path> aside(staged_.size());
+  std::vector<RemovedOnSignal> asideGuards;
+  auto removeAsides = [&] {
+    std::error_code ignored;
+    for (const fs::path& path : aside)
+      if (!path.empty()) fs::remove(path, ignored);
+  };
+  for (size_t i = renamed_; i < staged_.size(); ++i) {
+    struct stat info {};
+    if (::lstat(staged_[i].target.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) continue;
+    std::optional<std::string> random = randomHex();
+    if (!random) continue;
+    fs::path path = staged_[i].target.parent_path() /
+                    ("." + staged_[i].target.filename().string() + "-previous-" + *random);
+    asideGuards.emplace_back(path);
+    if (::link(staged_[i].target.c_str(), path.c_str()) == 0) aside[i] = path;
+  }
+  const size_t first = renamed_;
   for (; renamed_ < staged_.size(); ++renamed_) {
     const Staged& file = staged_[renamed_];
     if (::rename(file.staged.c_str(), file.target.c_str()) != 0) {
       const int error = errno;  // before any allocation below can change it
+      // Back as they were: the earlier files over this run's, this run's
+      // new names removed.
+      for (size_t i = first; i < renamed_; ++i) {
+        if (!aside[i].empty() && ::rename(aside[i].c_str(), staged_[i].target.c_str()) == 0)
+          aside[i].clear();
+        else if (aside[i].empty())
+          ::unlink(staged_[i].target.c_str());
+      }
+      removeAsides();
       throw InputError("cannot write '" + file.target.string() +
                        "': " + std::generic_category().message(error));
     }
     staged_[renamed_].guard.release();
   }
+  removeAsides();
   folderGuard_.release();
   kept_ = true;
 }

@@ -106,7 +106,10 @@ class OutputGroup {
   void add(const std::filesystem::path& path,
            const std::function<void(const std::filesystem::path& staged)>& write);
   // All written: renames each staged file to its target. Throws InputError
-  // naming the file if a rename fails (the remaining staged files are removed).
+  // naming the file if a rename fails: the files renamed before it are put
+  // back as the earlier run left them (kept aside as hard links until the
+  // last rename) and the rest of the staged files are removed. (A signal in
+  // the microseconds of the renames can still leave a mix.)
   void keep();
 
  private:
