@@ -10,6 +10,7 @@
 #include "core/metrics/error_metric.h"
 #include "core/metrics/pareto.h"
 #include "core/metrics/sheet.h"
+#include "core/metrics/text_wrap.h"
 #include "core/scene/gltf_loader.h"
 #include "core/scene/scene_loader.h"
 #include "core/vulkan/depth.h"
@@ -80,6 +81,19 @@ TEST(Chart, DrawsEachSeriesInItsColourOnWhitePaper) {
 // down to make room (study acne's subtitle ran off the image). The frame's
 // top edge: the first row that is dark across most of the plot's width. The
 // twin: a subtitle that fits leaves the frame where it was.
+// Break opportunities: spaces and hyphens between letters, never a minus
+// sign (compare's "ab -0.25" kept its number whole).
+TEST(Chart, WrappedTextBreaksAtSpacesAndHyphensNotMinusSigns) {
+  const std::string font = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+  // 14-pixel mono: about 8.4 pixels a character; 60 pixels hold 7.
+  EXPECT_EQ(wrapText("blinn-phong vs reference", 14, font, 60),
+            (std::vector<std::string>{"blinn-", "phong", "vs", "referen", "ce"}));
+  std::vector<std::string> minus = wrapText("ab -0.25 cd", 14, font, 60);
+  EXPECT_EQ(minus, (std::vector<std::string>{"ab", "-0.25", "cd"}));
+  EXPECT_TRUE(wrapText("", 14, font, 60).empty());
+  EXPECT_EQ(wrapText("fits", 14, font, 600), (std::vector<std::string>{"fits"}));
+}
+
 TEST(Chart, LongSubtitleWrapsAndPushesThePlotDown) {
   auto frameTop = [](const ImageU8& image) {
     for (uint32_t y = 0; y < image.height; ++y) {
@@ -376,6 +390,39 @@ TEST(DepthModes, NamesFormatsAndReversedZState) {
   EXPECT_EQ(depthClearValue(DepthMode::D16), 1.0f);
   EXPECT_EQ(depthCompareOp(DepthMode::ReversedZ), VK_COMPARE_OP_GREATER_OR_EQUAL);
   EXPECT_EQ(depthCompareOp(DepthMode::D32F), VK_COMPARE_OP_LESS);
+}
+
+// depthPrecisionWarning's edge cases (the GPU agreement is in
+// test_depth.cpp): a scene reaching past the far plane is clipped there,
+// not "not drawn" (depth is exactly 1 on the far plane itself); the fix it
+// names suits the projection and mode.
+TEST(DepthModes, PrecisionWarningsNameTheRightFix) {
+  Camera camera;
+  camera.eye = {0.0f, 3.0f, 7.0f};
+  camera.near = 0.1f;
+  camera.far = 10.0f;
+  for (DepthMode mode : {DepthMode::D16, DepthMode::D24, DepthMode::D32F})
+    EXPECT_FALSE(depthPrecisionWarning(camera, mode, 100.0).has_value()) << depthModeName(mode);
+  camera.near = 1e-7f;
+  camera.far = 100.0f;
+  std::optional<std::string> perspective = depthPrecisionWarning(camera, DepthMode::D32F, 10.0);
+  ASSERT_TRUE(perspective.has_value());
+  EXPECT_NE(perspective->find("surfaces are not drawn; raise the camera's near plane or use the "
+                              "reversed depth mode"),
+            std::string::npos)
+      << *perspective;
+  EXPECT_FALSE(depthPrecisionWarning(camera, DepthMode::ReversedZ, 10.0).has_value());
+  // Orthographic depth is spread evenly: a far plane a billion units out
+  // leaves reversed-Z floats steps of tens of units; the fix is the far plane.
+  camera.projection = Projection::Orthographic;
+  camera.near = 0.001f;
+  camera.far = 1e9f;
+  std::optional<std::string> orthographic =
+      depthPrecisionWarning(camera, DepthMode::ReversedZ, 10.0);
+  ASSERT_TRUE(orthographic.has_value());
+  EXPECT_NE(orthographic->find("bring the camera's far plane nearer"), std::string::npos)
+      << *orthographic;
+  EXPECT_EQ(orthographic->find("reversed depth mode"), std::string::npos) << *orthographic;
 }
 
 }  // namespace

@@ -276,6 +276,51 @@ TEST(RayTracer, CameraRaysPassTheBackFacesTheRasteriserCulls) {
   EXPECT_TRUE(hits(true)) << "glass";
 }
 
+// A surface made two-sided by listing each triangle twice, wound both ways
+// (back-facing copy first): the camera ray passes the back-facing copy and
+// still meets the front-facing one at the same distance. (Stepping past a
+// back face's distance and searching again lost it: a hole in the trace.)
+TEST(RayTracer, CullingKeepsAFrontFaceCoincidentWithABackFace) {
+  Mesh quad;
+  for (glm::vec3 p :
+       {glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)})
+    quad.vertices.push_back({p, {0, 0, 1}, {0, 0}, {1, 0, 0, 1}});
+  quad.indices = {0, 2, 1, 0, 3, 2, 0, 1, 2, 0, 2, 3};  // facing -z, then facing +z
+  Scene scene;
+  scene.objects.push_back({"quad", scene.addMesh(quad), glm::mat4(1.0f), Material{}});
+  RayTracer tracer(scene);
+  for (glm::vec2 at : {glm::vec2(0.5f, -0.5f), glm::vec2(-0.5f, 0.5f)}) {
+    std::optional<SurfaceHit> hit = tracer.intersect({{at, 3.0f}, {0, 0, -1}}, 0.0f, kInf, true);
+    ASSERT_TRUE(hit.has_value()) << at.x << ", " << at.y;
+    EXPECT_TRUE(hit->frontFace);
+  }
+  // From behind, the other copy is the front face.
+  EXPECT_TRUE(tracer.intersect({{0.5f, -0.5f, -3.0f}, {0, 0, 1}}, 0.0f, kInf, true).has_value());
+}
+
+// Through the uncovered share of a glTF BLEND veil the camera still sees
+// straight on: a single-sided plane behind it, seen from behind, is culled
+// there too, so the ray ends on the background.
+TEST(RayTracer, CameraRaysThroughABlendSurfaceStillPassCulledBackFaces) {
+  ShapeDesc plane{ShapeKind::Plane};
+  plane.size = 4.0f;
+  Scene scene = oneObject(plane, glm::mat4(1.0f));  // faces +y, seen from below: culled
+  Material veil;
+  veil.ka = veil.kd = glm::vec3(0.0f);
+  veil.ks = glm::vec3(0.0f);
+  veil.transparency = 1.0f;  // a fully uncovered veil: all of the pixel is what lies behind
+  veil.alphaCoverage = true;
+  veil.doubleSided = true;
+  scene.objects.push_back({"veil", scene.addShape(plane), translation({0.0f, -1.0f, 0.0f}), veil});
+  scene.objects[0].material.ka = glm::vec3(1.0f);
+  scene.ambient = glm::vec3(1.0f);
+  const Ray up{{0.3f, -3.0f, 0.1f}, {0, 1, 0}};
+  TraceStats stats;
+  const glm::vec3 seen =
+      RayTracer(scene).traceRay(up, kInf, up.origin, 0, 1.0f, TraceSettings{}, stats);
+  expectNear(seen, scene.background, 1e-6f);
+}
+
 TEST(RayTracer, BackFacesAreHitWithTheNormalTurnedToTheRay) {
   ShapeDesc sphere{ShapeKind::Icosphere};
   sphere.radius = 1.0f;

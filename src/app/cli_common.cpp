@@ -209,6 +209,7 @@ void OutputGroup::keep() {
   // this run's files or none. Where no link can be made (a file system
   // without them) the earlier file is replaced unguarded.
   std::vector<fs::path> aside(staged_.size());
+  std::vector<bool> earlier(staged_.size(), false);  // a file was there before
   std::vector<RemovedOnSignal> asideGuards;
   auto removeAsides = [&] {
     std::error_code ignored;
@@ -218,6 +219,7 @@ void OutputGroup::keep() {
   for (size_t i = renamed_; i < staged_.size(); ++i) {
     struct stat info {};
     if (::lstat(staged_[i].target.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) continue;
+    earlier[i] = true;
     std::optional<std::string> random = randomHex();
     if (!random) continue;
     fs::path path = staged_[i].target.parent_path() /
@@ -232,10 +234,11 @@ void OutputGroup::keep() {
       const int error = errno;  // before any allocation below can change it
       // Back as they were: the earlier files over this run's, this run's
       // new names removed.
+      // (An earlier file that could not be linked aside is lost: replaced.)
       for (size_t i = first; i < renamed_; ++i) {
         if (!aside[i].empty() && ::rename(aside[i].c_str(), staged_[i].target.c_str()) == 0)
           aside[i].clear();
-        else if (aside[i].empty())
+        else if (!earlier[i])
           ::unlink(staged_[i].target.c_str());
       }
       removeAsides();

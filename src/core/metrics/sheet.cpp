@@ -42,15 +42,16 @@ ImageU8 composeSheet(const std::vector<std::vector<SheetCell>>& rows) {
     }
   }
   // Titles and lines wrap to the cell's width (a narrow image would let them
-  // run into the next column); each row of the grid is as tall as its
-  // longest title and its most lines.
+  // run into the next column). A row's title band is as tall as its longest
+  // title; every row keeps room for the most lines any cell has, so the
+  // images of all rows sit on one grid.
   // Two pixels spare: antialiased ink can reach a pixel past the measured box.
   const int textWidth = std::max(int(cellWidth) - 2, 1);
   struct Laid {
     std::vector<std::string> title, lines;
   };
   std::vector<std::vector<Laid>> laid(rows.size());
-  std::vector<size_t> titleLines(rows.size(), 1), lineCount(rows.size(), 0);
+  std::vector<size_t> titleLines(rows.size(), 1);
   size_t mostLines = 0;
   for (size_t r = 0; r < rows.size(); ++r)
     for (const SheetCell& cell : rows[r]) {

@@ -1,5 +1,7 @@
 #include "core/metrics/text_wrap.h"
 
+#include <cctype>
+
 #include "core/base/oiio_module.h"
 
 namespace shadelab {
@@ -20,8 +22,13 @@ std::vector<std::string> wrapText(const std::string& text, int size, const std::
       // hyphen (kept). A first word too wide on its own is cut after as many
       // characters as fit (at least one).
       end = start;
+      auto letter = [&](size_t i) {
+        return i < text.size() && std::isalpha((unsigned char)text[i]);
+      };
       for (size_t at = text.find_first_of(" -", start); at != std::string::npos;
            at = text.find_first_of(" -", at + 1)) {
+        // A hyphen between letters ("blinn-phong"), not a minus sign.
+        if (text[at] == '-' && !(at > 0 && letter(at - 1) && letter(at + 1))) continue;
         size_t lineEnd = text[at] == '-' ? at + 1 : at;
         if (lineEnd == start || !fits(text.substr(start, lineEnd - start))) break;
         end = lineEnd;

@@ -7,9 +7,9 @@
 namespace shadelab {
 
 // `text` in lines at most `width` pixels wide at `size` in `font`, broken
-// at spaces and after hyphens; a word wider than that is broken where it reaches the width (a
-// line holds at least one character). Empty text: no lines. Loads the OpenImageIO module (it
-// measures with FreeType).
+// at spaces and after hyphens between letters; a word wider than that is broken where it reaches
+// the width (a line holds at least one character). Empty text: no lines. Loads the OpenImageIO
+// module (it measures with FreeType).
 std::vector<std::string> wrapText(const std::string& text, int size, const std::string& font,
                                   int width);
 

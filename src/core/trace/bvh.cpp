@@ -239,7 +239,8 @@ uint32_t Bvh::largestLeaf() const {
   return largest;
 }
 
-bool Bvh::intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) const {
+bool Bvh::intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit,
+                    float cullFacing) const {
   if (triangles_.empty()) return false;
   const glm::vec3 inverse = 1.0f / ray.direction;
   const float directionLength2 = squaredLength(ray.direction);
@@ -254,6 +255,9 @@ bool Bvh::intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) co
     if (node.count > 0) {
       for (uint32_t i = node.first; i < node.first + node.count; ++i) {
         const Triangle& tri = triangles_[i];
+        if (cullFacing != 0.0f &&
+            cullFacing * glm::dot(ray.direction, glm::cross(tri.edge1, tri.edge2)) > 0.0f)
+          continue;
         if (hitTriangle(ray, directionLength2, tri.v0, tri.edge1, tri.edge2, tri.normalLength2,
                         tMin, tMax, hit)) {
           hit.triangle = tri.index;

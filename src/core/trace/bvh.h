@@ -33,8 +33,12 @@ class Bvh {
  public:
   explicit Bvh(const Mesh& mesh);
 
-  // Closest hit with tMin < t < tMax.
-  bool intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit) const;
+  // Closest hit with tMin < t < tMax. With `cullFacing` +1, triangles whose
+  // face normal edge1 x edge2 points along the ray (back faces) are passed;
+  // -1 passes those facing the ray instead (a mirrored mesh, wound the
+  // other way); 0 culls nothing.
+  bool intersect(const Ray& ray, float tMin, float tMax, TriangleHit& hit,
+                 float cullFacing = 0.0f) const;
   // Number of triangles hit with tMin < t < tMax.
   uint32_t countHits(const Ray& ray, float tMin, float tMax) const;
   // Calls visit(n) for each triangle hit with tMin < t < tMax, n its face

@@ -132,8 +132,10 @@ struct RayTracer::TracedObject {
             glm::mat3(worldToObject) * ray.direction};
   }
   // Object-space hit; `geometric` is the unnormalised outward face normal.
-  bool intersect(const Ray& local, float tMin, float tMax, LocalHit& hit,
-                 glm::vec3& geometric) const;
+  // `cullBackFaces`: surfaces facing away from the ray are passed (a mesh's
+  // triangles in the BVH, so a coincident front face is still found).
+  bool intersect(const Ray& local, float tMin, float tMax, LocalHit& hit, glm::vec3& geometric,
+                 bool cullBackFaces = false) const;
   uint32_t countHits(const Ray& local, float tMax) const;
   // Calls visit(n) with the outward normal (object space, not normalised) at
   // each crossing with 0 < t < tMax.
@@ -174,7 +176,17 @@ glm::vec2 RayTracer::TracedObject::uvAt(glm::vec3 point, glm::vec3 normal,
 }
 
 bool RayTracer::TracedObject::intersect(const Ray& local, float tMin, float tMax, LocalHit& hit,
-                                        glm::vec3& geometric) const {
+                                        glm::vec3& geometric, bool cullBackFaces) const {
+  if (cullBackFaces && surface != Surface::Mesh) {
+    // A sphere, plane or box crosses a line at most twice: past a back
+    // face, the next crossing.
+    for (int crossing = 0; crossing < 2; ++crossing) {
+      if (!intersect(local, tMin, tMax, hit, geometric)) return false;
+      if (glm::dot(local.direction, geometric) <= 0.0f) return true;
+      tMin = std::nextafter(hit.t, kInfinity);
+    }
+    return false;
+  }
   bool found = false;
   switch (surface) {
     case Surface::Sphere:
@@ -188,7 +200,8 @@ bool RayTracer::TracedObject::intersect(const Ray& local, float tMin, float tMax
       break;
     case Surface::Mesh: {
       TriangleHit triangle;
-      if (!bvh->intersect(local, tMin, tMax, triangle)) return false;
+      const float cullFacing = cullBackFaces ? (mirrored ? -1.0f : 1.0f) : 0.0f;
+      if (!bvh->intersect(local, tMin, tMax, triangle, cullFacing)) return false;
       const Vertex& a = mesh->vertices[mesh->indices[3 * triangle.triangle]];
       const Vertex& b = mesh->vertices[mesh->indices[3 * triangle.triangle + 1]];
       const Vertex& c = mesh->vertices[mesh->indices[3 * triangle.triangle + 2]];
@@ -330,13 +343,9 @@ bool RayTracer::nearestKeptHit(const TracedObject& object, const Ray& local, flo
   const Material& material = scene_.objects[object.sceneObject].material;
   const bool culled = cullBackFaces && !material.doubleSided &&
                       (object.transparency <= 0.0f || object.alphaCoverage);
-  if (!culled && !(material.alphaCutoff > 0.0f))
-    return object.intersect(local, tMin, tMax, hit, geometric);
   for (int layer = 0; layer < kMaxCutAwayLayers; ++layer) {
-    if (!object.intersect(local, tMin, tMax, hit, geometric)) return false;
-    const bool backFace = glm::dot(local.direction, geometric) > 0.0f;
-    if (!(culled && backFace) && !cutAway(material, textures_, object.hitUv(local, hit, geometric)))
-      return true;
+    if (!object.intersect(local, tMin, tMax, hit, geometric, culled)) return false;
+    if (!cutAway(material, textures_, object.hitUv(local, hit, geometric))) return true;
     tMin = std::nextafter(hit.t, kInfinity);
   }
   return false;
@@ -511,7 +520,7 @@ Material RayTracer::materialAt(const Ray& ray, SurfaceHit& hit, float footprint)
 
 glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth,
                            float weight, const TraceSettings& settings, TraceStats& stats,
-                           RayCone cone) const {
+                           RayCone cone, bool cameraRay) const {
   const float footprint = cone.width + cone.spread * hit.t * glm::length(ray.direction);
   const RayCone next{footprint, cone.spread};
   const Material material = materialAt(ray, hit, footprint);
@@ -546,23 +555,25 @@ glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uin
     const Ray reflected =
         offsetRay(hit, mirrorDirection(incident, hit.shadingNormal), settings.epsilon);
     colour += reflectedWeight * traceRay(reflected, kInfinity, reflected.origin, depth + 1,
-                                         weight * reflectedWeight, settings, stats, next);
+                                         weight * reflectedWeight, settings, stats, next, false);
   }
   if (transmittedWeight > 0.0f && weight * transmittedWeight >= settings.minContribution) {
     const Ray transmitted = offsetRay(hit, glm::normalize(*refracted), settings.epsilon);
+    // Seen through a BLEND surface's uncovered share, the camera's view goes on.
     colour += transmittedWeight * traceRay(transmitted, kInfinity, transmitted.origin, depth + 1,
-                                           weight * transmittedWeight, settings, stats, next);
+                                           weight * transmittedWeight, settings, stats, next,
+                                           cameraRay && material.alphaCoverage);
   }
   return colour;
 }
 
 glm::vec3 RayTracer::traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth,
                               float weight, const TraceSettings& settings, TraceStats& stats,
-                              RayCone cone) const {
+                              RayCone cone, bool cameraRay) const {
   ++(depth == 0 ? stats.primaryRays : stats.secondaryRays);
-  std::optional<SurfaceHit> hit = intersect(ray, 0.0f, tMax, depth == 0);
+  std::optional<SurfaceHit> hit = intersect(ray, 0.0f, tMax, cameraRay);
   if (!hit) return missColour(scene_, ray.direction);
-  return shade(ray, *hit, viewer, depth, weight, settings, stats, cone);
+  return shade(ray, *hit, viewer, depth, weight, settings, stats, cone, cameraRay);
 }
 
 // The box-filtered mean of the pixel's n x n stratified samples, each with

@@ -150,9 +150,13 @@ class RayTracer {
   // The colour seen along `ray` for tMin < t < tMax. `viewer` is where V
   // points (the eye for camera rays, the origin for secondary ones), `depth`
   // the bounces already taken, `weight` the ray's share of the pixel,
-  // `cone` its footprint for texture filtering.
+  // `cone` its footprint for texture filtering. `cameraRay`: what the
+  // camera sees straight on (a camera ray, or one through the uncovered
+  // share of glTF BLEND surfaces), which passes the back faces the
+  // rasteriser culls (intersect).
   glm::vec3 traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth, float weight,
-                     const TraceSettings& settings, TraceStats& stats, RayCone cone = {}) const;
+                     const TraceSettings& settings, TraceStats& stats, RayCone cone = {},
+                     bool cameraRay = true) const;
   // The nearest hit for tMin < t < tMax. A camera ray (`cameraRay`) passes
   // the back faces of single-sided surfaces, as the rasteriser culls them
   // (Material::doubleSided); reflected, refracted and shadow rays see both
@@ -173,7 +177,8 @@ class RayTracer {
   bool nearestKeptHit(const TracedObject& object, const Ray& local, float tMin, float tMax,
                       bool cullBackFaces, LocalHit& hit, glm::vec3& geometric) const;
   glm::vec3 shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth, float weight,
-                  const TraceSettings& settings, TraceStats& stats, RayCone cone) const;
+                  const TraceSettings& settings, TraceStats& stats, RayCone cone,
+                  bool cameraRay) const;
   // The material at a hit with its textures applied (the diffuse texel,
   // the bumped shading normal written into `hit`), filtered over `footprint`.
   Material materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const;

@@ -64,16 +64,23 @@ double depthResolution(const Camera& camera, DepthMode mode, double distance) {
 std::optional<std::string> depthPrecisionWarning(const Camera& camera, DepthMode mode,
                                                  double farthest) {
   double target = glm::length(glm::dvec3(camera.at) - glm::dvec3(camera.eye));
+  // What lies past the far plane is clipped, and depth is 1 on it: the
+  // farthest point looked at is just inside.
+  const double inside = double(camera.far) * (1.0 - 1e-3);
   for (auto [distance, what] :
        {std::pair{target, "the camera's target"},
-        std::pair{std::min(farthest, double(camera.far)), "the scene's farthest point"}}) {
-    if (!(distance > camera.near && distance <= camera.far)) continue;
+        std::pair{std::min(farthest, inside), "the scene's farthest point"}}) {
+    if (!(distance > camera.near && distance < camera.far)) continue;
     double resolution = depthResolution(camera, mode, distance);
     if (resolution <= 0.01 * distance) continue;
     std::string where = std::string(what) + ", " + shortNumber(distance) + " away";
     std::string setting = "depth mode " + std::string(depthModeName(mode)) + " with near " +
                           shortNumber(camera.near) + " and far " + shortNumber(camera.far);
-    std::string fix = "raise the camera's near plane or use the reversed depth mode";
+    // Perspective depth crowds near the near plane, orthographic depth is
+    // spread evenly; reversed-Z already spends float's precision well.
+    std::string fix = camera.projection == Projection::Orthographic || isReversedZ(mode)
+                          ? "bring the camera's far plane nearer"
+                          : "raise the camera's near plane or use the reversed depth mode";
     if (std::isinf(resolution))
       return setting + ": at " + where +
              ", depth rounds to the far plane's and surfaces are not drawn; " + fix;

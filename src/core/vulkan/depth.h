@@ -43,7 +43,8 @@ double depthResolution(const Camera& camera, DepthMode mode, double distance);
 // camera's target or at `farthest` (the distance of the scene's farthest
 // point along the line of sight), surfaces are not drawn, or depths 1% of
 // the distance apart are not told apart. Names the mode, near and far, the
-// distance and the fixes (a larger near plane, reversed-Z).
+// distance and the fixes (a larger near plane or reversed-Z in perspective;
+// a nearer far plane for orthographic or reversed-Z).
 std::optional<std::string> depthPrecisionWarning(const Camera& camera, DepthMode mode,
                                                  double farthest);
 
