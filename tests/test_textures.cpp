@@ -13,6 +13,7 @@
 #include "core/base/errors.h"
 #include "core/base/image.h"
 #include "core/scene/environment.h"
+#include "core/scene/gltf_loader.h"
 #include "core/scene/procedural_textures.h"
 #include "core/scene/texture.h"
 #include "core/scene/uv_mapping.h"
@@ -122,6 +123,43 @@ TEST(TextureFile, NonFiniteTexelsAreRefused) {
   writeRaw<float>(finite, 2, 1, 3, OIIO::TypeDesc::FLOAT, {3.0e38f, 0.0f, 1.0f, inf, 0.5f, 0.0f});
   EXPECT_NO_THROW(loadTextureFile(finite, TextureRole::Color));
   EXPECT_NO_THROW(readLinearImage(finite));
+}
+
+// A scene's textures are held to kMaxSceneTexels together, checked on each
+// header before its texels are decoded: four 8192x8192 textures fit, a
+// fifth is refused naming it and the totals. Texture files and glTF images
+// go through it (a scene whose textures already declare the whole budget,
+// with no texels behind them: a 4x4 image more is refused before decoding).
+TEST(TextureFile, ScenesTexturesTogetherAreHeldToTheBudget) {
+  const int64_t side = kMaxTextureSide;
+  EXPECT_NO_THROW(checkSceneTexels("fourth", side, side, 3 * uint64_t(side * side)));
+  try {
+    checkSceneTexels("fifth.png", side, side, 4 * uint64_t(side * side));
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "fifth.png: 8192x8192 texels would bring the scene's textures to 335544320 texels, "
+              "more than the 268435456 allowed (1 GiB of RGBA8)");
+  }
+  fs::path png = test::testFolder() / "small.png";
+  writeRaw<uint8_t>(png, 4, 4, 4, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(64, 200));
+  EXPECT_NO_THROW(loadTextureFile(png, TextureRole::Color, kMaxSceneTexels - 16));
+  EXPECT_THROW(loadTextureFile(png, TextureRole::Color, kMaxSceneTexels - 15), InputError);
+  Scene full;
+  full.textures.push_back(Texture{"declared only", 16384, 16384});
+  ASSERT_EQ(sceneTexels(full), kMaxSceneTexels);
+  try {
+    appendGltf(full, std::string(SHADELAB_TEST_DATA_DIR) + "/alpha_mask.gltf");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("images[0]: 4x4 texels would bring the scene's "
+                        "textures to 268435472 texels"),
+              std::string::npos)
+        << error.what();
+  }
+  Scene empty;
+  EXPECT_NO_THROW(appendGltf(empty, std::string(SHADELAB_TEST_DATA_DIR) + "/alpha_mask.gltf"));
 }
 
 TEST(Procedural, CheckerAlternatesPerCellAndTiles) {

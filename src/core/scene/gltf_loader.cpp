@@ -100,6 +100,13 @@ bool refuseWrite(std::string*, const std::string&, const std::vector<unsigned ch
 // - Its header must declare a PNG or JPEG (the formats glTF 2.0 allows) of at
 //   most kMaxTextureSide texels a side, as for texture files, before a byte
 //   is decoded.
+// The model being read, and the scene's texels so far (checkSceneTexels):
+// the scene's textures before the file, then each image of it as declared.
+struct ImageLoad {
+  tinygltf::Model* model = nullptr;
+  uint64_t texels = 0;
+};
+
 bool loadImageChecked(tinygltf::Image* image, const int index, std::string* error,
                       std::string* warning, int requiredWidth, int requiredHeight,
                       const unsigned char* bytes, int size, void* userData) {
@@ -108,7 +115,8 @@ bool loadImageChecked(tinygltf::Image* image, const int index, std::string* erro
     if (error) *error += name + ": " + what;
     return false;
   };
-  const auto* model = static_cast<const tinygltf::Model*>(userData);
+  auto* load = static_cast<ImageLoad*>(userData);
+  const tinygltf::Model* model = load->model;
   if (image->bufferView >= 0) {
     // tinygltf checked both indices before calling.
     const tinygltf::BufferView& view = model->bufferViews.at(size_t(image->bufferView));
@@ -128,6 +136,12 @@ bool loadImageChecked(tinygltf::Image* image, const int index, std::string* erro
     return refuse(std::to_string(declared->width) + "x" + std::to_string(declared->height) +
                   " texels, more than the " + std::to_string(kMaxTextureSide) +
                   " allowed on a side");
+  try {
+    checkSceneTexels("image", declared->width, declared->height, load->texels);
+  } catch (const InputError& tooMany) {
+    return refuse(std::string(tooMany.what()).substr(std::string("image: ").size()));
+  }
+  load->texels += uint64_t(declared->width) * uint64_t(declared->height);
   // nullptr: tinygltf's default options (4 channels).
   return tinygltf::LoadImageData(image, index, error, warning, requiredWidth, requiredHeight, bytes,
                                  size, nullptr);
@@ -176,7 +190,7 @@ void checkGlbHeader(std::span<const uint8_t> bytes, const std::string& source) {
 }
 
 tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& source,
-                           const std::string& baseDir, bool allowFiles) {
+                           const std::string& baseDir, bool allowFiles, uint64_t texelsBefore) {
   tinygltf::TinyGLTF loader;
   ModelFolder folder{std::filesystem::absolute(baseDir.empty() ? "." : baseDir).lexically_normal()};
   if (allowFiles)
@@ -185,7 +199,8 @@ tinygltf::Model parseModel(std::span<const uint8_t> bytes, const std::string& so
   else
     loader.SetFsCallbacks({&noFileExists, &keepPath, &refuseRead, &refuseWrite, nullptr});
   tinygltf::Model model;
-  loader.SetImageLoader(&loadImageChecked, &model);
+  ImageLoad imageLoad{&model, texelsBefore};
+  loader.SetImageLoader(&loadImageChecked, &imageLoad);
   std::string error, warning;
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (bytes.size() > std::numeric_limits<unsigned int>::max())
@@ -525,8 +540,8 @@ Scene sceneFromImport(Scene scene, GltfImport import, const std::string& source)
 GltfImport appendGltf(Scene& scene, const std::filesystem::path& path, const glm::mat4& parent) {
   std::vector<uint8_t> bytes = readFile(path);
   std::string source = path.string();
-  tinygltf::Model model =
-      parseModel(bytes, source, path.parent_path().string(), /* allowFiles= */ true);
+  tinygltf::Model model = parseModel(bytes, source, path.parent_path().string(),
+                                     /* allowFiles= */ true, sceneTexels(scene));
   return NodeWalker(model, source, scene).walk(parent);
 }
 
@@ -538,7 +553,7 @@ Scene loadGltfScene(const std::filesystem::path& path) {
 }
 
 Scene parseGltfScene(std::span<const uint8_t> bytes, const std::string& sourceName) {
-  tinygltf::Model model = parseModel(bytes, sourceName, "", /* allowFiles= */ false);
+  tinygltf::Model model = parseModel(bytes, sourceName, "", /* allowFiles= */ false, 0);
   Scene scene;
   scene.name = sourceName;
   GltfImport import = NodeWalker(model, sourceName, scene).walk(glm::mat4(1.0f));

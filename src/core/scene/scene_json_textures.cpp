@@ -72,7 +72,7 @@ int32_t TextureLibrary::fileTexture(const Field& field, const std::string& owner
   std::string key = path.string() + (role == TextureRole::Color ? " (colour)" : " (data)");
   if (auto found = loaded_.find(key); found != loaded_.end()) return found->second;
   try {
-    return add(key, loadTextureFile(path, role));
+    return add(key, loadTextureFile(path, role, sceneTexels(scene_)));
   } catch (const InputError& error) {
     // A file of the wrong kind says what it should have been (a regular
     // file); one that does not decode, what it should hold.

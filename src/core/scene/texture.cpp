@@ -18,7 +18,26 @@ void checkTextureSize(const std::string& name, int64_t width, int64_t height) {
                      " allowed on a side");
 }
 
-Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
+uint64_t sceneTexels(const Scene& scene) {
+  uint64_t texels = 0;
+  for (const Texture& texture : scene.textures) texels += uint64_t(texture.width) * texture.height;
+  return texels;
+}
+
+void checkSceneTexels(const std::string& name, int64_t width, int64_t height,
+                      uint64_t texelsBefore) {
+  // Sides within kMaxTextureSide: the product and the sum stay far below 2^64.
+  const uint64_t texels =
+      uint64_t(std::max<int64_t>(width, 0)) * uint64_t(std::max<int64_t>(height, 0));
+  if (texelsBefore + texels <= kMaxSceneTexels) return;
+  throw InputError(name + ": " + std::to_string(width) + "x" + std::to_string(height) +
+                   " texels would bring the scene's textures to " +
+                   std::to_string(texelsBefore + texels) + " texels, more than the " +
+                   std::to_string(kMaxSceneTexels) + " allowed (1 GiB of RGBA8)");
+}
+
+Texture loadTextureFile(const std::filesystem::path& path, TextureRole role,
+                        uint64_t texelsBefore) {
   std::string name = path.string();
   std::error_code error;
   if (!std::filesystem::exists(path, error))
@@ -30,6 +49,7 @@ Texture loadTextureFile(const std::filesystem::path& path, TextureRole role) {
   ImageReader source(path, "texture file '" + name + "' cannot be read as an image");
   // The header first: a 3.5 MB PNG may declare 16384x16384 texels.
   checkTextureSize(name, source.header().width, source.header().height);
+  checkSceneTexels(name, source.header().width, source.header().height, texelsBefore);
   // Only floating-point files hold linear light; 8- and 16-bit files hold
   // encoded values already (sRGB colour, or raw data).
   bool linearLight = source.floatingPoint();
