@@ -361,6 +361,16 @@ TEST_F(Cli, NearPlaneTheDepthBufferCannotResolveWarns) {
       << fights.output;
   CommandResult fine = run("render default --depth d16 --size 32x18 -o " + out("d.png"));
   EXPECT_EQ(fine.output.find("warning"), std::string::npos) << fine.output;
+  // compare warns once per depth mode its columns use.
+  CommandResult columns =
+      run("compare zfight --size 32x18 --column depth=d16 --column name=again,depth=d16 "
+          "--column depth=reversed -o " +
+          out("z.png"));
+  EXPECT_EQ(columns.exitCode, 0) << columns.output;
+  size_t first = columns.output.find("depth mode d16 with near 0.1");
+  EXPECT_NE(first, std::string::npos) << columns.output;
+  EXPECT_EQ(columns.output.find("depth mode d16", first + 1), std::string::npos) << columns.output;
+  EXPECT_EQ(columns.output.find("depth mode reversed"), std::string::npos) << columns.output;
 }
 
 TEST_F(Cli, RenderLoadsJsonSceneFile) {

@@ -226,6 +226,13 @@ ComparePlan planCompare(const CompareOptions& options, const GlobalOptions& glob
       "compare (its raster reference is 4x, a column's tess up to " + fixed(finest, 3) + "x)",
       "--max-triangles");
   printSceneWarnings(plan.scene, true);
+  // Once per depth mode the columns use.
+  std::vector<DepthMode> warned;
+  for (const CompareColumn& column : plan.columns)
+    if (std::find(warned.begin(), warned.end(), column.settings.depth) == warned.end()) {
+      warned.push_back(column.settings.depth);
+      printDepthWarning(plan.scene, column.settings.depth);
+    }
   return plan;
 }
 
