@@ -7,6 +7,7 @@
 // scene under the sky, with must-fail twins.
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "core/base/image.h"
 #include "core/metrics/metrics.h"
@@ -179,42 +180,51 @@ TEST_F(TraceEnvironment, TexturedSceneAgreesWithTheRasteriser) {
   EXPECT_GT(swapped, same + 0.005);
 }
 
-// glTF's alphaMode MASK, KHR_texture_transform and single-sided culling in
-// the traced reference (tests/data: alpha_mask.gltf's checker-holed quad
-// over a floor, texture_transform.gltf's offset/rotated/scaled base colour
-// and shifted normal map, double_sided.gltf's two quads seen from behind,
-// one of them single-sided), traced at pixel centres without shadows
-// against raster Phong with bilinear filtering (the tracer filters by area,
-// whatever the sampler): the features agree when the FLIP is small, and the
-// tracer with the feature undone (the mask dropped, the transforms reset,
-// every surface double-sided) must be clearly worse.
-double gltfFeatureFlip(Renderer& renderer, const std::string& file, bool undo) {
+// glTF's alphaMode MASK, KHR_texture_transform, single-sided culling and
+// nearest magnification in the traced reference (tests/data:
+// alpha_mask.gltf's checker-holed quad over a floor, texture_transform.gltf's
+// offset/rotated/scaled base colour and shifted normal map on 2x2 nearest
+// textures, double_sided.gltf's two quads seen from behind, one of them
+// single-sided), traced at pixel centres without shadows against raster
+// Phong: the features agree when the FLIP is small, and the tracer with a
+// feature undone (`undo` changes the traced scene only) must be clearly worse.
+double gltfFeatureFlip(Renderer& renderer, const std::string& file,
+                       const std::function<void(Material&)>& undo) {
   const Scene scene = loadScene(std::string(SHADELAB_TEST_DATA_DIR) + "/" + file);
   Scene traced = scene;
   if (undo)
-    for (Object& object : traced.objects) {
-      object.material.alphaCutoff = 0.0f;
-      object.material.doubleSided = true;
-      object.material.diffuseMap.transform = {};
-      object.material.normalMap.transform = {};
-    }
+    for (Object& object : traced.objects) undo(object.material);
   TraceSettings trace;
   trace.width = 160, trace.height = 120, trace.samplesPerPixel = 1, trace.shadows = false;
   RenderSettings raster{trace.width, trace.height, ShadingModel::Phong};
-  raster.textures.filterOverride = TextureFilter::Bilinear;
   return flipError(encodeSrgb8(RayTracer(traced).render(trace).image),
                    encodeSrgb8(renderer.renderToImage(scene, raster).image))
       .mean;
 }
 
-TEST_F(TraceEnvironment, GltfMaskTextureTransformAndCullingAgreeWithTheRasteriser) {
-  for (const char* file : {"alpha_mask.gltf", "texture_transform.gltf", "double_sided.gltf"}) {
-    const double same = gltfFeatureFlip(renderer(), file, false);
-    const double undone = gltfFeatureFlip(renderer(), file, true);
-    std::printf("%s, raster Phong vs trace: mean FLIP %.4f; tracer without the feature %.4f\n",
-                file, same, undone);
-    EXPECT_LE(same, 0.02) << file;
-    EXPECT_GT(undone, 2.0 * same + 0.005) << file;
+TEST_F(TraceEnvironment, GltfMaterialFeaturesAgreeWithTheRasteriser) {
+  struct Case {
+    const char* file;
+    const char* feature;
+    std::function<void(Material&)> undo;
+  };
+  const Case cases[] = {
+      {"alpha_mask.gltf", "the mask", [](Material& m) { m.alphaCutoff = 0.0f; }},
+      {"texture_transform.gltf", "the transforms",
+       [](Material& m) { m.diffuseMap.transform = m.normalMap.transform = {}; }},
+      {"texture_transform.gltf", "nearest magnification",
+       [](Material& m) {
+         m.diffuseMap.sampler.filter = m.normalMap.sampler.filter = TextureFilter::Bilinear;
+       }},
+      {"double_sided.gltf", "culling", [](Material& m) { m.doubleSided = true; }},
+  };
+  for (const Case& c : cases) {
+    const double same = gltfFeatureFlip(renderer(), c.file, nullptr);
+    const double undone = gltfFeatureFlip(renderer(), c.file, c.undo);
+    std::printf("%s, raster Phong vs trace: mean FLIP %.4f; tracer without %s %.4f\n", c.file, same,
+                c.feature, undone);
+    EXPECT_LE(same, 0.02) << c.file;
+    EXPECT_GT(undone, 2.0 * same + 0.005) << c.file << ": " << c.feature;
   }
 }
 

@@ -67,7 +67,20 @@ glm::vec4 TraceTexture::bilinear(const Level& level, glm::vec2 st,
   return glm::mix(top, bottom, fy);
 }
 
+glm::vec4 TraceTexture::nearest(const Level& level, glm::vec2 st,
+                                const SamplerDesc& sampler) const {
+  const int32_t w = int32_t(level.width), h = int32_t(level.height);
+  const int32_t x = int32_t(std::clamp(std::floor(st.x * float(w)), -1e9f, 1e9f));
+  const int32_t y = int32_t(std::clamp(std::floor(st.y * float(h)), -1e9f, 1e9f));
+  return level.texels[size_t(wrapTexel(y, h, sampler.wrapV)) * level.width +
+                      size_t(wrapTexel(x, w, sampler.wrapU))];
+}
+
 glm::vec4 TraceTexture::sample(glm::vec2 st, float lod, const SamplerDesc& sampler) const {
+  // A nearest sampler magnifying shows the texel the point falls in: the
+  // author's hard texels (pixel art), as the rasteriser draws them.
+  if (sampler.filter == TextureFilter::Nearest && !(lod > 0.0f))
+    return nearest(levels_[0], st, sampler);
   const float maxLevel = float(levels_.size() - 1);
   const float level = std::isnan(lod) ? 0.0f : std::clamp(lod, 0.0f, maxLevel);
   const uint32_t low = uint32_t(level);

@@ -5,9 +5,11 @@
 // chain made the way passes/mip_generation makes it (each level a linear
 // blit of the one above: a bilinear tap at every smaller texel's centre, in
 // linear light). Lookups are trilinear at a level of detail the caller
-// computes from the ray's footprint, with the sampler's wrap modes; the
-// sampler's filter is what the rasteriser is measured on, so the reference
-// ignores it and always filters by area.
+// computes from the ray's footprint, with the sampler's wrap modes. When
+// minifying, the sampler's filter is what the rasteriser is measured on, so
+// the reference ignores it and always filters by area; when magnifying, a
+// nearest sampler gives the texel the point falls in (hard texels, as the
+// author asked for them), every other the bilinear blend.
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
@@ -31,6 +33,7 @@ class TraceTexture {
     std::vector<glm::vec4> texels;
   };
   glm::vec4 bilinear(const Level& level, glm::vec2 st, const SamplerDesc& sampler) const;
+  glm::vec4 nearest(const Level& level, glm::vec2 st, const SamplerDesc& sampler) const;
   std::vector<Level> levels_;
 };
 
