@@ -22,6 +22,7 @@ constexpr int kMarginLeft = 86, kMarginRight = 170, kMarginTop = 52, kMarginBott
 constexpr int kTitleSize = 18, kAxisLabelSize = 15, kTickSize = 13, kPointLabelSize = 12;
 const float kInk[4] = {0.1f, 0.1f, 0.12f, 1.0f};
 const float kGrid[4] = {0.88f, 0.88f, 0.9f, 1.0f};
+const float kLeader[4] = {0.55f, 0.55f, 0.58f, 1.0f};
 const float kPaper[4] = {1.0f, 1.0f, 1.0f, 1.0f};
 
 struct Rect {
@@ -248,10 +249,26 @@ void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, in
       int x = int(std::lround(mx(p.x))), y = int(std::lround(my(p.y)));
       Rect size = textRect(p.label, kPointLabelSize, 0, 0);
       int w = size.x1 - size.x0, h = size.y1 - size.y0;
-      const std::pair<int, int> spots[] = {
+      std::vector<std::pair<int, int>> spots = {
           {x + 9, y + h / 2}, {x - 9 - w, y + h / 2}, {x - w / 2, y - 9}, {x - w / 2, y + 9 + h},
           {x + 6, y - 6},     {x - 6 - w, y - 6},     {x + 6, y + 6 + h}, {x - 6 - w, y + 6 + h}};
-      for (auto [left, baseline] : spots) {
+      // Crowded there: further out in eight directions, joined to the point
+      // by a leader line (spots from this index on).
+      const size_t firstFar = spots.size();
+      for (int reach : {28, 46, 64})
+        for (int k = 0; k < 8; ++k) {
+          const double angle = double(k) * 0.785398163397448;  // pi / 4
+          const int dx = int(std::lround(reach * std::cos(angle)));
+          const int dy = int(std::lround(reach * std::sin(angle)));
+          spots.push_back({dx > 0   ? x + dx
+                           : dx < 0 ? x + dx - w
+                                    : x - w / 2,
+                           dy > 0   ? y + dy + h
+                           : dy < 0 ? y + dy
+                                    : y + h / 2});
+        }
+      for (size_t spot = 0; spot < spots.size(); ++spot) {
+        auto [left, baseline] = spots[spot];
         Rect rect = textRect(p.label, kPointLabelSize, left, baseline);
         rect = {rect.x0 - 1, rect.y0 - 1, rect.x1 + 1, rect.y1 + 1};
         bool inside = rect.x0 >= bounds.x0 && rect.x1 <= bounds.x1 && rect.y0 >= bounds.y0 &&
@@ -259,6 +276,14 @@ void drawChartInto(Canvas& image, const Chart& chart, int originX, int width, in
         if (!inside || std::any_of(taken.begin(), taken.end(),
                                    [&](const Rect& t) { return t.overlaps(rect); }))
           continue;
+        if (spot >= firstFar) {
+          // From the marker's edge to the label box's nearest point.
+          const int toX = std::clamp(x, rect.x0, rect.x1), toY = std::clamp(y, rect.y0, rect.y1);
+          const double length = std::hypot(toX - x, toY - y);
+          const double start = (std::ceil(series.markerSize) + 2.0) / std::max(length, 1.0);
+          image.line(int(std::lround(x + (toX - x) * start)),
+                     int(std::lround(y + (toY - y) * start)), toX, toY, kLeader, std::nullopt);
+        }
         drawText(image, left, baseline, p.label, kPointLabelSize, kInk);
         taken.push_back(rect);
         break;
