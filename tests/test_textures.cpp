@@ -316,5 +316,29 @@ TEST(TraceTextureSampling, MipChainAveragesAndTrilinearMixes) {
   EXPECT_NEAR(traced.sample({0.3f, 0.7f}, 9.0f, sampler).r, mean, 1e-6f);  // clamped to the last
 }
 
+// A nearest sampler magnifies to the texel the point falls in; minifying,
+// every sampler filters by area. A coordinate that is NaN or infinite (a
+// hostile texture transform: inf x 0) gives a texel in range, never a NaN
+// (which the bilinear blend gave) or an undefined conversion.
+TEST(TraceTextureSampling, NearestMagnifiesToHardTexelsAndOddCoordinatesStayInRange) {
+  Texture texture{"two", 2, 1, {0, 0, 0, 255, 255, 255, 255, 255}, false};
+  const TraceTexture traced(texture);
+  SamplerDesc nearest{TextureWrap::Repeat, TextureWrap::Repeat, TextureFilter::Nearest};
+  SamplerDesc bilinear{TextureWrap::Repeat, TextureWrap::Repeat, TextureFilter::Bilinear};
+  EXPECT_EQ(traced.sample({0.6f, 0.5f}, 0.0f, nearest).r, 1.0f);
+  EXPECT_EQ(traced.sample({0.4f, 0.5f}, -1.0f, nearest).r, 0.0f);
+  EXPECT_NEAR(traced.sample({0.6f, 0.5f}, 0.0f, bilinear).r, 0.7f, 1e-6f);  // x = 0.6 * 2 - 0.5
+  EXPECT_NEAR(traced.sample({0.6f, 0.5f}, 1.0f, nearest).r, 0.5f, 1e-6f);   // minified: the mean
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const SamplerDesc& sampler : {nearest, bilinear})
+    for (glm::vec2 st : {glm::vec2(nan, 0.5f), glm::vec2(0.5f, nan), glm::vec2(inf, -inf)})
+      for (float lod : {0.0f, 0.5f}) {
+        const glm::vec4 texel = traced.sample(st, lod, sampler);
+        EXPECT_TRUE(std::isfinite(texel.r) && texel.r >= 0.0f && texel.r <= 1.0f)
+            << st.x << ", " << st.y << " lod " << lod;
+      }
+}
+
 }  // namespace
 }  // namespace shadelab

@@ -23,6 +23,14 @@ int32_t wrapTexel(int32_t i, int32_t size, TextureWrap wrap) {
   return 0;
 }
 
+namespace {
+// A float texel coordinate as an integer the wrap can take: far outside
+// 0..1 (a huge uv scale) floats lose their fraction anyway.
+int32_t texelIndex(float coordinate) {
+  return int32_t(std::clamp(coordinate, -1e9f, 1e9f));
+}
+}  // namespace
+
 TraceTexture::TraceTexture(const Texture& texture) {
   Level base{texture.width, texture.height, {}};
   base.texels.resize(size_t(texture.width) * texture.height);
@@ -58,10 +66,7 @@ glm::vec4 TraceTexture::bilinear(const Level& level, glm::vec2 st,
     ty = wrapTexel(ty, h, sampler.wrapV);
     return level.texels[size_t(ty) * level.width + size_t(tx)];
   };
-  // Far outside 0..1 (a huge uv scale) float texel coordinates lose their
-  // fraction; the wrap keeps the integers in range either way.
-  const int32_t ix = int32_t(std::clamp(x0, -1e9f, 1e9f)),
-                iy = int32_t(std::clamp(y0, -1e9f, 1e9f));
+  const int32_t ix = texelIndex(x0), iy = texelIndex(y0);
   const glm::vec4 top = glm::mix(texel(ix, iy), texel(ix + 1, iy), fx);
   const glm::vec4 bottom = glm::mix(texel(ix, iy + 1), texel(ix + 1, iy + 1), fx);
   return glm::mix(top, bottom, fy);
@@ -70,13 +75,18 @@ glm::vec4 TraceTexture::bilinear(const Level& level, glm::vec2 st,
 glm::vec4 TraceTexture::nearest(const Level& level, glm::vec2 st,
                                 const SamplerDesc& sampler) const {
   const int32_t w = int32_t(level.width), h = int32_t(level.height);
-  const int32_t x = int32_t(std::clamp(std::floor(st.x * float(w)), -1e9f, 1e9f));
-  const int32_t y = int32_t(std::clamp(std::floor(st.y * float(h)), -1e9f, 1e9f));
+  const int32_t x = texelIndex(std::floor(st.x * float(w)));
+  const int32_t y = texelIndex(std::floor(st.y * float(h)));
   return level.texels[size_t(wrapTexel(y, h, sampler.wrapV)) * level.width +
                       size_t(wrapTexel(x, w, sampler.wrapU))];
 }
 
 glm::vec4 TraceTexture::sample(glm::vec2 st, float lod, const SamplerDesc& sampler) const {
+  // A coordinate that is not finite (a hostile texture transform's inf x 0
+  // or overflow) has no texel: the first, not a NaN colour or an undefined
+  // float-to-int conversion.
+  if (!std::isfinite(st.x)) st.x = 0.0f;
+  if (!std::isfinite(st.y)) st.y = 0.0f;
   // A nearest sampler magnifying shows the texel the point falls in: the
   // author's hard texels (pixel art), as the rasteriser draws them.
   if (sampler.filter == TextureFilter::Nearest && !(lod > 0.0f))

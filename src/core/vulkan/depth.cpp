@@ -72,7 +72,7 @@ std::optional<std::string> depthPrecisionWarning(const Camera& camera, DepthMode
         std::pair{std::min(farthest, inside), "the scene's farthest point"}}) {
     if (!(distance > camera.near && distance < camera.far)) continue;
     double resolution = depthResolution(camera, mode, distance);
-    if (resolution <= 0.01 * distance) continue;
+    if (!(resolution > 0.01 * distance)) continue;  // a NaN says nothing either
     std::string where = std::string(what) + ", " + shortNumber(distance) + " away";
     std::string setting = "depth mode " + std::string(depthModeName(mode)) + " with near " +
                           shortNumber(camera.near) + " and far " + shortNumber(camera.far);
