@@ -9,7 +9,9 @@
 #include <random>
 
 #include "core/base/errors.h"
+#include "core/scene/billboard_quad.h"
 #include "core/scene/lighting.h"
+#include "core/scene/texture.h"
 #include "core/scene/transform.h"
 #include "core/trace/bvh.h"
 #include "core/trace/ray.h"
@@ -512,6 +514,115 @@ TEST(RayTracer, ProgressRisesInHundredthsToOne) {
   EXPECT_FLOAT_EQ(reports[38], 0.97f);
   EXPECT_EQ(reports.back(), 1.0f);
   for (size_t i = 1; i < reports.size(); ++i) EXPECT_GT(reports[i], reports[i - 1]);
+}
+
+// A billboard of one copy standing at `position` (anchored at its bottom,
+// 2 wide and 3 high, scaled by 0.5 across) with a one-texel texture of
+// `alpha`, seen by a camera at (0, 4, 10) looking at the origin.
+Scene billboardScene(BillboardKind kind, BillboardAlpha mode, uint8_t alpha, glm::vec3 position) {
+  Scene scene;
+  scene.background = {0.1f, 0.2f, 0.3f};
+  scene.ambient = glm::vec3(1.0f);
+  scene.camera.eye = {0.0f, 4.0f, 10.0f};
+  scene.camera.at = {0.0f, 0.0f, 0.0f};
+  scene.textures.push_back(solidTexture({255, 255, 255, alpha}, TextureRole::Color, "texel"));
+  Billboard billboard;
+  billboard.name = "tree";
+  billboard.kind = kind;
+  billboard.alpha = mode;
+  billboard.anchor = BillboardAnchor::Bottom;
+  billboard.size = {2.0f, 3.0f};
+  billboard.material.ka = glm::vec3(0.5f);
+  billboard.material.kd = billboard.material.ks = glm::vec3(0.0f);
+  billboard.material.diffuseMap.texture = 0;
+  billboard.material.alphaCutoff = 0.5f;
+  billboard.instances.push_back(translation(position) * scaling({0.5f, 1.0f, 1.0f}));
+  scene.billboards.push_back(billboard);
+  return scene;
+}
+
+// Each kind's quad as billboard.vert places it: the anchor at the middle of
+// the bottom edge, the sizes times the copy's scales, and the normal
+// (cross(right, up)) towards the eye, across the axis, or out of the image.
+TEST(BillboardQuads, EachKindTurnsAsTheVertexStageTurnsIt) {
+  const glm::vec3 position{3.0f, 0.0f, -2.0f};
+  for (BillboardKind kind :
+       {BillboardKind::Screen, BillboardKind::Spherical, BillboardKind::Cylindrical}) {
+    const Scene scene = billboardScene(kind, BillboardAlpha::Test, 255, position);
+    const Mesh quads = billboardQuads(scene.billboards[0], scene.camera.viewMatrix());
+    ASSERT_EQ(quads.vertices.size(), 4u);
+    ASSERT_EQ(quads.indices.size(), 6u);
+    const Vertex* v = quads.vertices.data();
+    expectNear(0.5f * (v[0].position + v[1].position), position, 1e-5f);
+    EXPECT_NEAR(glm::length(v[1].position - v[0].position), 1.0f, 1e-5f);  // 2 x 0.5
+    EXPECT_NEAR(glm::length(v[3].position - v[0].position), 3.0f, 1e-5f);
+    const glm::vec3 right = glm::normalize(v[1].position - v[0].position);
+    const glm::vec3 up = glm::normalize(v[3].position - v[0].position);
+    expectNear(v[0].normal, glm::cross(right, up), 1e-5f);
+    expectNear(glm::vec3(v[0].tangent), right, 1e-5f);
+    const glm::vec3 toEye = scene.camera.eye - position;
+    if (kind == BillboardKind::Screen) {
+      expectNear(v[0].normal, glm::normalize(scene.camera.eye - scene.camera.at), 1e-5f);
+    } else if (kind == BillboardKind::Spherical) {
+      expectNear(v[0].normal, glm::normalize(toEye), 1e-5f);
+    } else {
+      expectNear(up, {0.0f, 1.0f, 0.0f}, 1e-5f);
+      const glm::vec3 level = glm::normalize(glm::vec3(toEye.x, 0.0f, toEye.z));
+      expectNear(v[0].normal, level, 1e-5f);
+    }
+    // Counter-clockwise seen from the front.
+    const glm::vec3 a = v[quads.indices[0]].position, b = v[quads.indices[1]].position,
+                    c = v[quads.indices[2]].position;
+    EXPECT_GT(glm::dot(glm::cross(b - a, c - a), v[0].normal), 0.0f);
+    expectNear(glm::vec3(v[2].uv, 0.0f), {1.0f, 1.0f, 0.0f}, 0.0f);
+  }
+}
+
+// The tracer sees the quad the rasteriser draws: a camera ray through it
+// hits the billboard (numbered after the objects), a cut-away texel lets
+// the ray pass, a blended texel covers its alpha's share of the pixel, and
+// no shadow ray is stopped by it (billboards cast none).
+TEST(RayTracer, TracesBillboardsAsTheirQuads) {
+  const glm::vec3 position{0.0f, 0.0f, 0.0f};
+  Scene scene = billboardScene(BillboardKind::Cylindrical, BillboardAlpha::Test, 255, position);
+  scene.objects.push_back(
+      {"far", scene.addShape({ShapeKind::UvSphere}), translation({30, 0, 0}), Material{}});
+  const Ray ray{scene.camera.eye, glm::vec3(0.0f, 1.5f, 0.0f) - scene.camera.eye};
+  {
+    RayTracer tracer(scene);
+    const std::optional<SurfaceHit> hit = tracer.intersect(ray, 0.0f, kInf, true);
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(hit->object, 1u);  // after the one object
+    EXPECT_NEAR(hit->t, 1.0f, 1e-4f);
+    EXPECT_TRUE(tracer.material(*hit).doubleSided);
+    // A shadow ray straight through the quad reaches the light.
+    const Ray through{glm::vec3(0.0f, 1.5f, -3.0f), glm::vec3(0.0f, 0.0f, 6.0f)};
+    EXPECT_EQ(tracer.transmittance(through, 1.0f), 1.0f);
+    TraceStats stats;
+    const glm::vec3 lit = tracer.traceRay(ray, kInf, ray.origin, 0, 1.0f, TraceSettings{}, stats);
+    expectNear(lit, glm::vec3(0.5f), 1e-5f);  // Ia ka times the white texel
+  }
+  Scene cut = billboardScene(BillboardKind::Cylindrical, BillboardAlpha::Test, 100, position);
+  EXPECT_FALSE(RayTracer(cut).intersect(ray, 0.0f, kInf, true).has_value());
+  Scene blended = billboardScene(BillboardKind::Cylindrical, BillboardAlpha::Blend, 64, position);
+  blended.billboards[0].material.transparency = 0.5f;
+  RayTracer tracer(blended);
+  TraceStats stats;
+  const glm::vec3 seen = tracer.traceRay(ray, kInf, ray.origin, 0, 1.0f, TraceSettings{}, stats);
+  const float coverage = 0.5f * 64.0f / 255.0f;  // 1 - transparency, times the texel's alpha
+  expectNear(seen, coverage * glm::vec3(0.5f) + (1.0f - coverage) * blended.background, 1e-5f);
+}
+
+// Billboards face the camera the tracer was built for; rendering after the
+// camera moved would show them turned towards the old one, so it throws.
+TEST(RayTracer, RefusesToRenderBillboardsForAMovedCamera) {
+  Scene scene = billboardScene(BillboardKind::Spherical, BillboardAlpha::Test, 255, glm::vec3(0));
+  RayTracer tracer(scene);
+  TraceSettings settings;
+  settings.width = settings.height = 4;
+  EXPECT_NO_THROW(tracer.render(settings));
+  scene.camera.eye.x += 1.0f;
+  EXPECT_THROW(tracer.render(settings), std::logic_error);
 }
 
 TEST(RayTracer, SampleCountsMustBeSquares) {

@@ -240,26 +240,6 @@ uint32_t packCorners(glm::vec2 corner) {
   return glm::packHalf2x16(corner);
 }
 
-glm::vec3 anyPerpendicular(glm::vec3 axis) {
-  glm::vec3 r = glm::cross(axis, glm::vec3(0.0f, 0.0f, 1.0f));
-  if (glm::dot(r, r) < 1e-12f) r = glm::cross(axis, glm::vec3(1.0f, 0.0f, 0.0f));
-  return glm::normalize(r);
-}
-
-// The quad's right and up in eye space, as billboard.vert turns it.
-std::pair<glm::vec3, glm::vec3> quadAxes(int kind, glm::vec3 anchor, glm::vec3 up) {
-  if (kind == BILLBOARD_SCREEN) return {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
-  if (kind == BILLBOARD_SPHERICAL) {
-    float length = glm::length(anchor);
-    glm::vec3 normal = length > 0.0f ? -anchor / length : glm::vec3(0.0f, 0.0f, 1.0f);
-    glm::vec3 r = glm::cross(up, normal);
-    glm::vec3 right = glm::dot(r, r) > 1e-12f ? glm::normalize(r) : anyPerpendicular(normal);
-    return {right, glm::cross(normal, right)};
-  }
-  glm::vec3 r = glm::cross(up, -anchor);
-  return {glm::dot(r, r) > 1e-12f ? glm::normalize(r) : anyPerpendicular(up), up};
-}
-
 }  // namespace
 
 BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& scene,
@@ -283,9 +263,8 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
     const GpuBillboard& billboard = scene.billboards[b];
     glm::vec3 up = glm::normalize(rotation * billboard.up);
     float anchor = billboard.constants.optics.y;
-    int kind = int(billboard.constants.optics.x);
     // Screen-aligned quads rise along the image's y, the others along `up` (or near it).
-    glm::vec3 rise = kind == BILLBOARD_SCREEN ? glm::vec3(0, 1, 0) : up;
+    glm::vec3 rise = billboard.kind == BillboardKind::Screen ? glm::vec3(0, 1, 0) : up;
     bool trims = trim.enabled && !billboard.outlines.empty() &&
                  trim.filterOverride.value_or(billboard.filter) != TextureFilter::Anisotropic;
     for (int whole = 0; whole < 2; ++whole) {
@@ -314,7 +293,7 @@ BillboardFrame BillboardPass::prepareFrame(uint32_t frameSlot, const GpuScene& s
       bool trimmed = false;
       if (trims) {
         glm::vec3 anchorEye(instance.centre);
-        auto [right, quadUp] = quadAxes(kind, anchorEye, up);
+        auto [right, quadUp] = billboardAxes(billboard.kind, anchorEye, up);
         glm::vec3 centre = anchorEye + quadUp * ((0.5f - anchor) * placement.size.y);
         uint32_t level = billboardLevelBound(
             {centre, right, quadUp, placement.size, billboard.texels, trim.focalPixels},

@@ -141,11 +141,6 @@ std::vector<std::string> sceneWarnings(const Scene& scene, bool rasteriser) {
           "environment, so they show their local shading alone (add an \"environment\" to the "
           "scene, or see them with `trace`)");
   }
-  if (!rasteriser && !scene.billboards.empty())
-    warnings.push_back(std::to_string(scene.billboards.size()) + " billboard object(s) (first: '" +
-                       scene.billboards[0].name +
-                       "'): the ray tracer does not draw billboards (they face the camera of a "
-                       "rasterised frame); see them with `render`");
   return warnings;
 }
 

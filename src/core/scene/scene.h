@@ -228,8 +228,10 @@ struct Scene {
   std::vector<Mesh> meshes;       // what is drawn
   std::vector<ShapeDesc> shapes;  // parallel to meshes: how each was built (Custom: loaded)
   std::vector<Object> objects;
-  std::vector<Texture> textures;      // referenced by Material texture slots
-  std::vector<Billboard> billboards;  // drawn by the billboard pass; the tracer ignores them
+  std::vector<Texture> textures;  // referenced by Material texture slots
+  // Drawn by the billboard pass; the tracer traces the quads it draws for the
+  // scene's camera (core/scene/billboard_quad.h).
+  std::vector<Billboard> billboards;
   // The factor retessellate last built the procedural meshes at (1 after
   // tessellateForView): their detail chains start from it (uploadScene).
   float tessellationScale = 1.0f;

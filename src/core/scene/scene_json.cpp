@@ -89,7 +89,7 @@
 //   "teapot"    the Utah teapot standing on y = 0, spout along +x, 3.15 high, 6.4 long;
 //               tessellation 16 quads per patch side (1..64; 32 patches)
 //   "billboard" a textured quad that turns towards the viewer, drawn by the billboard pass
-//               (passes/billboard_pass.h; the ray tracer does not draw billboards). Fields:
+//               (passes/billboard_pass.h; the ray tracer traces the same quads). Fields:
 //               "kind" "screen" (parallel to the image plane) | "spherical" (default: faces the
 //               eye point) | "cylindrical" (turns about "axis" only, e.g. a tree);
 //               "axis" [0, 1, 0] (world space: the cylindrical axis, the spherical up);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -10,6 +11,7 @@
 #include <thread>
 
 #include "core/base/errors.h"
+#include "core/scene/billboard_quad.h"
 #include "core/scene/lighting.h"
 #include "core/scene/transform.h"
 #include "core/scene/uv_mapping.h"
@@ -123,7 +125,10 @@ struct RayTracer::TracedObject {
   float ior = 1.5f;
   bool castsShadows = true;    // Object::castsShadows: shadow rays pass through it when false
   bool alphaCoverage = false;  // Material::alphaCoverage: shadow rays pass kt, no Fresnel
-  uint32_t sceneObject = 0;    // index into Scene::objects
+  bool receivesShadows = true;
+  // SurfaceHit::object's numbering: Scene::objects, then Scene::billboards.
+  uint32_t sceneObject = 0;
+  const Material* material = nullptr;  // the scene object's, or billboardMaterial's
   UvProjection projection = UvProjection::Mesh;
   Bounds uvBounds;  // the scene mesh's box, which S-mappings are fitted to (as at upload)
 
@@ -272,7 +277,8 @@ void RayTracer::TracedObject::forEachCrossingNormal(
   }
 }
 
-RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene) {
+RayTracer::RayTracer(const Scene& scene, float tessellationScale)
+    : scene_(scene), billboardView_(scene.camera.viewMatrix()) {
   std::vector<const Bvh*> meshBvh(scene.meshes.size(), nullptr);
   std::vector<const Mesh*> meshSource(scene.meshes.size(), nullptr);
   for (const Object& object : scene.objects) {
@@ -311,6 +317,8 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.ior = object.material.ior;
     traced.castsShadows = object.castsShadows;
     traced.alphaCoverage = object.material.alphaCoverage;
+    traced.receivesShadows = object.receivesShadows;
+    traced.material = &object.material;
     traced.projection = object.material.uvProjection;
     if (traced.projection != UvProjection::Mesh)
       traced.uvBounds = computeBounds(scene.meshes[object.mesh]);
@@ -333,14 +341,53 @@ RayTracer::RayTracer(const Scene& scene, float tessellationScale) : scene_(scene
     traced.worldBounds = transformBounds(local, object.transform);
     objects_.push_back(traced);
   }
+  // Billboards: the quads the rasterised frame of this camera draws, one
+  // mesh per billboard object, in world space. They cast no shadow, as in
+  // the rasteriser (shadow_pass.h).
+  billboardMaterials_.reserve(scene.billboards.size());
+  for (uint32_t b = 0; b < scene.billboards.size(); ++b) {
+    const Billboard& billboard = scene.billboards[b];
+    if (billboard.instances.empty()) continue;
+    meshes_.push_back(std::make_unique<Mesh>(billboardQuads(billboard, billboardView_)));
+    bvhs_.push_back(std::make_unique<Bvh>(*meshes_.back()));
+    billboardMaterials_.push_back(billboardMaterial(billboard));
+    TracedObject traced;
+    traced.sceneObject = uint32_t(scene.objects.size()) + b;
+    traced.surface = Surface::Mesh;
+    traced.mesh = meshes_.back().get();
+    traced.bvh = bvhs_.back().get();
+    traced.material = &billboardMaterials_.back();
+    traced.transparency = traced.material->transparency;
+    traced.alphaCoverage = traced.material->alphaCoverage;
+    traced.castsShadows = false;
+    traced.receivesShadows = billboard.receivesShadows;
+    traced.worldBounds = traced.bvh->bounds();
+    objects_.push_back(traced);
+  }
   for (const Texture& texture : scene.textures) textures_.emplace_back(texture);
 }
 
 RayTracer::~RayTracer() = default;
 
+Material billboardMaterial(const Billboard& billboard) {
+  Material material = billboard.material;
+  material.reflectivity = 0.0f;  // billboard.frag has no mirror or environment term
+  material.doubleSided = true;   // not culled; the back lit as the front
+  material.uvProjection = UvProjection::Mesh;
+  material.alpha = 1.0f;
+  if (billboard.alpha == BillboardAlpha::Blend) {
+    material.alphaCoverage = true;  // the texel's alpha times 1 - transparency
+    material.alphaCutoff = 0.0f;
+  } else {
+    material.alphaCoverage = false;  // cut out, otherwise opaque
+    material.transparency = 0.0f;
+  }
+  return material;
+}
+
 bool RayTracer::nearestKeptHit(const TracedObject& object, const Ray& local, float tMin, float tMax,
                                bool cullBackFaces, LocalHit& hit, glm::vec3& geometric) const {
-  const Material& material = scene_.objects[object.sceneObject].material;
+  const Material& material = *object.material;
   const bool culled = cullBackFaces && !material.doubleSided &&
                       (object.transparency <= 0.0f || object.alphaCoverage);
   for (int layer = 0; layer < kMaxCutAwayLayers; ++layer) {
@@ -404,7 +451,7 @@ float RayTracer::transmittance(const Ray& ray, float tMax, bool fresnel) const {
     float tEntry;
     if (!intersectBounds(object.worldBounds, ray, inverse, 0.0f, tMax, tEntry)) continue;
     const Ray local = object.toLocal(ray);
-    if (scene_.objects[object.sceneObject].material.alphaCutoff > 0.0f) {
+    if (object.material->alphaCutoff > 0.0f) {
       // A cut-out: each crossing the cut keeps blocks (or passes kt).
       LocalHit hit;
       glm::vec3 geometric;
@@ -466,7 +513,7 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
     float passed = 1.0f;
     // The scene's switches, as the shadow maps obey them: a light with
     // "shadows": false, an object that receives none.
-    if (settings.shadows && light.shadows && scene_.objects[hit.object].receivesShadows) {
+    if (settings.shadows && light.shadows && tracedObject(hit.object).receivesShadows) {
       Ray shadow = offsetRay(hit, toLight, settings.epsilon);
       if (point) shadow.direction = light.position - shadow.origin;  // the segment is 0 < t < 1
       ++stats.shadowRays;
@@ -485,15 +532,25 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
                                         settings.blinn);
 }
 
+const RayTracer::TracedObject& RayTracer::tracedObject(uint32_t sceneObject) const {
+  // objects_ is in SurfaceHit::object's order, some objects left out.
+  const auto found = std::lower_bound(
+      objects_.begin(), objects_.end(), sceneObject,
+      [](const TracedObject& traced, uint32_t index) { return traced.sceneObject < index; });
+  assert(found != objects_.end() && found->sceneObject == sceneObject);
+  return *found;
+}
+
+const Material& RayTracer::material(const SurfaceHit& hit) const {
+  return *tracedObject(hit.object).material;
+}
+
 Material RayTracer::materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const {
-  const Material& material = scene_.objects[hit.object].material;
+  const TracedObject& object = tracedObject(hit.object);
+  const Material& material = *object.material;
   if (!material.diffuseMap.present() && !material.normalMap.present() &&
       !material.heightMap.present())
     return material;
-  // objects_ is in scene order, some objects left out: find the hit's.
-  const TracedObject& object = *std::lower_bound(
-      objects_.begin(), objects_.end(), hit.object,
-      [](const TracedObject& traced, uint32_t index) { return traced.sceneObject < index; });
   const glm::vec3 incident = glm::normalize(ray.direction);
   UvFrame frame;
   frame.uv = object.projection == UvProjection::Mesh
@@ -612,6 +669,10 @@ TraceResult RayTracer::render(const TraceSettings& settings) const {
     throw InputError("trace size " + std::to_string(settings.width) + "x" +
                      std::to_string(settings.height) + ": expected 1..16384 on each side");
   checkSamplesPerPixel(settings.samplesPerPixel);
+  if (!scene_.billboards.empty() && scene_.camera.viewMatrix() != billboardView_)
+    throw std::logic_error(
+        "RayTracer::render: the camera moved since the tracer turned the "
+        "billboards towards it; build a tracer for the new camera");
   const uint32_t grid = uint32_t(std::lround(std::sqrt(double(settings.samplesPerPixel))));
   const CameraRays camera(scene_.camera, settings.width, settings.height);
   TraceResult result{ImageRgba(settings.width, settings.height), {}};

@@ -93,7 +93,9 @@ struct SurfaceHit {
   glm::vec3 shadingNormal{0.0f};    // unit, interpolated on meshes, same side
   glm::vec2 uv{0.0f};               // as the object's mesh maps it (for textures)
   bool frontFace = true;            // the ray came from outside (against the outward normal)
-  uint32_t object = 0;              // index into Scene::objects
+  // Index into Scene::objects, or Scene::objects.size() + b for a copy of
+  // Scene::billboards[b] (RayTracer::material gives either's material).
+  uint32_t object = 0;
   // Object space, for texture coordinates: the point, the outward face
   // normal, and the triangle hit on a mesh.
   glm::vec3 localPosition{0.0f};
@@ -167,9 +169,12 @@ class RayTracer {
   // for 0 < t < tMax: 0 behind an opaque surface, otherwise the product over
   // the surfaces crossed of kt (1 - F), or of kt alone without `fresnel`.
   float transmittance(const Ray& ray, float tMax, bool fresnel = true) const;
+  // The material of the object or billboard hit, before its textures.
+  const Material& material(const SurfaceHit& hit) const;
 
  private:
   struct TracedObject;
+  const TracedObject& tracedObject(uint32_t sceneObject) const;
   // The object's nearest hit in (tMin, tMax) that a glTF MASK cut-out keeps
   // (cutAway, trace_material.h) and, with `cullBackFaces`, that is not the
   // back face of a single-sided surface the rasteriser culls (opaque or glTF
@@ -189,11 +194,20 @@ class RayTracer {
                        const TraceSettings& settings, TraceStats& stats) const;
 
   const Scene& scene_;
+  // The camera's view when the tracer was built: billboards turn towards it.
+  glm::mat4 billboardView_;
+  std::vector<Material> billboardMaterials_;   // by traced billboard, reserved up front
   std::vector<std::unique_ptr<Mesh>> meshes_;  // the meshes the BVHs were built from
   std::vector<std::unique_ptr<Bvh>> bvhs_;
   std::vector<TracedObject> objects_;
   std::vector<TraceTexture> textures_;  // parallel to Scene::textures
 };
+
+// A billboard's material as the tracer applies it, billboard.frag's
+// equation: cut out at the diffuse texel's alpha (BillboardAlpha::Test) or
+// covering the texel's alpha times 1 - transparency of the pixel (Blend),
+// two-sided, with no mirror or environment term.
+Material billboardMaterial(const Billboard& billboard);
 
 // Throws InputError unless `samplesPerPixel` is a square n * n, 1..256; the
 // message begins with `name` (the command line passes its option, "--spp").

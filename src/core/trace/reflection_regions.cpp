@@ -23,10 +23,10 @@ Ray leaving(const SurfaceHit& hit, glm::vec3 direction) {
   return {hit.position + side * 1e-4f * scale * hit.geometricNormal, direction};
 }
 
-ReflectionRegion classify(const Scene& scene, const RayTracer& tracer, const Ray& camera) {
+ReflectionRegion classify(const RayTracer& tracer, const Ray& camera) {
   std::optional<SurfaceHit> hit = tracer.intersect(camera, 0.0f, 1.0f, true);
   if (!hit) return ReflectionRegion::None;
-  const Material& material = scene.objects[hit->object].material;
+  const Material& material = tracer.material(*hit);
   if (material.reflectivity <= 0.0f && material.transparency <= 0.0f) return ReflectionRegion::None;
   const bool refracts = material.transparency > material.reflectivity;
   glm::vec3 incident = glm::normalize(camera.direction);
@@ -61,7 +61,7 @@ ReflectionRegions classifyReflections(const Scene& scene, uint32_t width, uint32
   for (uint32_t y = 0; y < height; ++y)
     for (uint32_t x = 0; x < width; ++x)
       regions.pixels[size_t(y) * width + x] =
-          classify(scene, tracer, rays.through(float(x) + 0.5f, float(y) + 0.5f));
+          classify(tracer, rays.through(float(x) + 0.5f, float(y) + 0.5f));
   return regions;
 }
 

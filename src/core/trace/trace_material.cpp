@@ -94,11 +94,15 @@ Material texturedMaterial(const Material& material, const std::vector<TraceTextu
   // The normal map's transform serves the height map too, as in the shaders.
   const Lookup lookup = transformed(untransformed, material.normalMap.transform);
   if (material.diffuseMap.present()) {
-    const glm::vec3 texel(sampleAt(textures[size_t(material.diffuseMap.texture)],
-                                   material.diffuseMap,
-                                   transformed(untransformed, material.diffuseMap.transform)));
-    result.ka *= texel;
-    result.kd *= texel;
+    const glm::vec4 texel =
+        sampleAt(textures[size_t(material.diffuseMap.texture)], material.diffuseMap,
+                 transformed(untransformed, material.diffuseMap.transform));
+    result.ka *= glm::vec3(texel);
+    result.kd *= glm::vec3(texel);
+    // Coverage (glTF BLEND, blended billboards): the texel's alpha times the
+    // material's opacity.
+    if (material.alphaCoverage)
+      result.transparency = 1.0f - (1.0f - material.transparency) * glm::clamp(texel.a, 0.0f, 1.0f);
   }
   const bool normalMapped = material.normalMap.present(),
              heightMapped = material.heightMap.present();

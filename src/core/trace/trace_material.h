@@ -34,7 +34,8 @@ struct UvFrame {
 // Tangent-plane directions for a hit with unit `normal` seen along unit `incident`.
 void tangentPlaneAxes(glm::vec3 normal, glm::vec3 incident, glm::vec3& along, glm::vec3& across);
 
-// The material with its diffuse texel applied; `normal` (unit, world space)
+// The material with its diffuse texel applied (for a coverage material,
+// Material::alphaCoverage, its alpha too); `normal` (unit, world space)
 // is replaced by the bumped normal when the material has a normal or height
 // map. `footprint` is the cone's width at the hit, `cosine` |N.incident|.
 Material texturedMaterial(const Material& material, const std::vector<TraceTexture>& textures,

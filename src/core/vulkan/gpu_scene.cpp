@@ -282,13 +282,11 @@ GpuBillboard gpuBillboard(const Billboard& billboard,
   int32_t kind = billboard.kind == BillboardKind::Screen      ? BILLBOARD_SCREEN
                  : billboard.kind == BillboardKind::Spherical ? BILLBOARD_SPHERICAL
                                                               : BILLBOARD_CYLINDRICAL;
-  float anchor = billboard.anchor == BillboardAnchor::Bottom ? 0.0f : 0.5f;
-  out.constants.optics = glm::vec4(float(kind), anchor, 0.0f, 0.0f);
+  out.kind = billboard.kind;
+  out.constants.optics = glm::vec4(float(kind), anchorHeight(billboard.anchor), 0.0f, 0.0f);
   out.instances.reserve(billboard.instances.size());
   for (const glm::mat4& matrix : billboard.instances)
-    out.instances.push_back(
-        {glm::vec3(matrix[3]), billboard.size * glm::vec2(glm::length(glm::vec3(matrix[0])),
-                                                          glm::length(glm::vec3(matrix[1])))});
+    out.instances.push_back(billboardPlacement(billboard, matrix));
   return out;
 }
 

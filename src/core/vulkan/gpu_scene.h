@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/scene/billboard_outline.h"
+#include "core/scene/billboard_quad.h"
 #include "core/scene/lod.h"
 #include "core/scene/scene.h"
 #include "core/scene/shadows.h"
@@ -74,13 +75,6 @@ uint32_t chooseDrawLevel(std::span<const DrawLevel> levels, const DrawItem& draw
                          const ViewSize& view, uint32_t previous, float bound, float hysteresis,
                          std::vector<float>& projected);
 
-// One copy of a billboard, world space (Billboard::instances reduced to what
-// a quad that faces the viewer keeps of a matrix).
-struct BillboardPlacement {
-  glm::vec3 position{0.0f};  // the anchor point
-  glm::vec2 size{1.0f};      // width, height
-};
-
 // An impostor billboard's atlas (core/scene/impostor.h): textures
 // GpuScene::impostorTextures[2 atlas] (coverage) and [2 atlas + 1] (normals),
 // captured around `centre` (mesh space), each cell seeing halfSize on either
@@ -104,8 +98,9 @@ struct GpuBillboard {
   // draw: 1 when its copies are drawn as their trimmed outlines.
   gpu::DrawConstants constants{};
   glm::vec3 up{0.0f, 1.0f, 0.0f};  // world: a cylindrical one's axis, a spherical one's up
-  uint32_t material = 0;           // set 1 (passes/scene_textures), numbered at upload
-  bool blended = false;            // alpha blend: sorted with the transparent draws
+  BillboardKind kind = BillboardKind::Spherical;  // optics.x's kind (not impostors)
+  uint32_t material = 0;  // set 1 (passes/scene_textures), numbered at upload
+  bool blended = false;   // alpha blend: sorted with the transparent draws
   std::vector<BillboardPlacement> instances;
   ImpostorAtlas impostor;
   // Trimmed outlines (core/scene/billboard_outline.h), one per mip level of
