@@ -87,7 +87,10 @@ void main() {
   if (alphaMask && (hasMap(TEXTURE_DIFFUSE) ? texture(diffuseMap, st).a : 1.0) < draw.ka.w)
     discard;
   vec3 texel = diffuseTexel(st);
+  // glTF BLEND: the texel's alpha times the factor's.
+  float opacity = draw.kd.w * (hasMap(TEXTURE_ALPHA) ? texture(diffuseMap, st).a : 1.0);
 #else
+  float opacity = draw.kd.w;
   if (alphaMask && 1.0 < draw.ka.w) discard;
 #endif
 #if defined(FLAT_VARYINGS)
@@ -141,7 +144,7 @@ void main() {
   if (shadingModel != SHADING_UNLIT) color += drawEmissive();
   if (environmentEnabled && shadingModel != SHADING_UNLIT)
     color += environmentColor(environment, draw.optics.x, draw.optics.y);
-  // kd.w: opacity, 1 - transparency, for the blended draws. With the
+  // kd.w: opacity, 1 - transparency (times a glTF BLEND texel's alpha), for the blended draws. With the
   // environment term the transmitted light is env(T), so the surface is opaque.
-  outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);
+  outColor = vec4(color, environmentEnabled ? 1.0 : opacity);
 }

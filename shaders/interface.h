@@ -191,6 +191,9 @@ struct ObjectData {
 // The textures' KHR_texture_transform (diffuseUv, normalUv and the
 // rotations) applies; without it st is used as is.
 #define TEXTURE_UV_TRANSFORM 16
+// glTF BLEND (Material::alphaCoverage) with a diffuse map: the texel's alpha
+// scales the opacity kd.w the blended draw writes.
+#define TEXTURE_ALPHA 32
 
 // Per draw, as push constants: the material and the object's index. Fragment
 // shaders read the material from here, never from the storage buffer (on

@@ -581,8 +581,8 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   fs::path shaders = shaderCopy(dir);
   // The edited shader swaps red and blue: a change that is easy to measure.
   replaceInFile(shaders / "forward_fragment.glsl",
-                "outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);",
-                "outColor = vec4(color.bgr, environmentEnabled ? 1.0 : draw.kd.w);");
+                "outColor = vec4(color, environmentEnabled ? 1.0 : opacity);",
+                "outColor = vec4(color.bgr, environmentEnabled ? 1.0 : opacity);");
   CommandResult r =
       view("key O\nframes 2\nscreenshot before.png\nkey R\nframes 2\nscreenshot after.png\n", "",
            "SHADELAB_SHADER_DIR=" + shaders.string());
@@ -609,7 +609,7 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
 TEST_F(Viewer, ShaderCompileErrorIsShownAndLastGoodPipelineKept) {
   fs::path shaders = shaderCopy(dir);
   replaceInFile(shaders / "forward_fragment.glsl",
-                "outColor = vec4(color, environmentEnabled ? 1.0 : draw.kd.w);",
+                "outColor = vec4(color, environmentEnabled ? 1.0 : opacity);",
                 "outColor = colour;");
   CommandResult r = view("key O\nkey R\nframes 2\nscreenshot after.png\n", "",
                          "SHADELAB_SHADER_DIR=" + shaders.string());

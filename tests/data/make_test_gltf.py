@@ -287,6 +287,38 @@ def alpha_mask():
     b.finish("alpha_mask.gltf")
 
 
+def alpha_blend():
+    # alphaMode BLEND: a quad whose 4x4 texture's alpha rises across it (0, 85,
+    # 170, 255 by column, nearest) at a factor alpha of 0.8, standing in front
+    # of a blue wall over a grey floor: the wall shows through by 1 - 0.8 x the
+    # texel's alpha.
+    b = Builder()
+    floor = quad_primitive(b, [(-3, 0, 3), (3, 0, 3), (3, 0, -3), (-3, 0, -3)], (0, 1, 0), QUAD_UVS, 0)
+    wall = quad_primitive(b, [(-3, 0, -2), (3, 0, -2), (3, 3, -2), (-3, 3, -2)], (0, 0, 1), QUAD_UVS, 1)
+    pane = quad_primitive(b, [(-1, 0.5, 0), (1, 0.5, 0), (1, 2.5, 0), (-1, 2.5, 0)], (0, 0, 1), QUAD_UVS, 2)
+    ramp = []
+    for y in range(4):
+        for x in range(4):
+            ramp += [230, 120, 40, 85 * x]
+    b.doc["images"] = [embed_png(4, 4, ramp)]
+    b.doc["samplers"] = [{"magFilter": 9728, "minFilter": 9728}]
+    b.doc["textures"] = [{"source": 0, "sampler": 0}]
+    b.doc["materials"] = [
+        {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1],
+                                                   "metallicFactor": 0, "roughnessFactor": 1}},
+        {"name": "wall", "pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.2, 0.8, 1],
+                                                  "metallicFactor": 0, "roughnessFactor": 1}},
+        {"name": "pane", "alphaMode": "BLEND", "pbrMetallicRoughness": {
+            "baseColorTexture": {"index": 0}, "baseColorFactor": [1, 1, 1, 0.8],
+            "metallicFactor": 0, "roughnessFactor": 1}}]
+    b.doc["meshes"] = [{"primitives": [floor]}, {"primitives": [wall]}, {"primitives": [pane]}]
+    b.doc["nodes"] = [{"mesh": 0}, {"mesh": 1}, {"mesh": 2}] + camera_and_sun(
+        b, (0, 2, 6), [-0.3826834323650898, 0, 0, 0.9238795325112867],
+        [-0.0871557427476582, 0, 0, 0.9961946980917455])
+    b.doc["scenes"] = [{"nodes": [0, 1, 2, 3, 4]}]
+    b.finish("alpha_blend.gltf")
+
+
 def double_sided():
     # Two quads whose front faces look away from the camera (normal -z), lit
     # by a sun behind the camera: the left one doubleSided (drawn, its back lit
@@ -379,4 +411,4 @@ def bad_materials():
 
 if __name__ == "__main__":
     hierarchy(); non_indexed(); strip_fan(); textured(); lights_camera(); binary(); bad()
-    alpha_mask(); double_sided(); texture_transform(); bad_materials()
+    alpha_mask(); alpha_blend(); double_sided(); texture_transform(); bad_materials()

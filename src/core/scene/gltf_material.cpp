@@ -192,9 +192,10 @@ const Material& MaterialTable::material(int index) {
       fail(source_, field, numberText(factor) + "; expected a number from 0 to 1000000");
     material.emissive *= factor;
   }
-  // BLEND: translucent by the factor's alpha (the texture's alpha is not
-  // read). MASK: cut out where the factor's alpha times the texel's is below
-  // alphaCutoff (checkAlphaCutoffs refused a negative or non-numeric one).
+  // BLEND: covering the factor's alpha times the texel's (the base colour
+  // texture's alpha: TEXTURE_ALPHA, trace_material.cpp). MASK: cut out where the factor's alpha
+  // times the texel's is below alphaCutoff (checkAlphaCutoffs refused a negative or non-numeric
+  // one).
   if (source.alphaMode == "BLEND") {
     material.transparency = 1.0f - alpha;
     material.alphaCoverage = true;

@@ -157,9 +157,23 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
       uploadBuffer(context, std::as_bytes(std::span(vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   gpuScene.indices =
       uploadBuffer(context, std::as_bytes(std::span(indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  // Whether a texture has a texel that is not opaque, found once per texture.
+  std::vector<int8_t> translucentTexels(scene.textures.size(), -1);
+  auto hasTranslucentTexels = [&](int32_t index) {
+    int8_t& known = translucentTexels[size_t(index)];
+    if (known < 0) {
+      const std::vector<uint8_t>& rgba = scene.textures[size_t(index)].rgba8;
+      known = 0;
+      for (size_t a = 3; a < rgba.size() && !known; a += 4) known = rgba[a] < 255;
+    }
+    return known == 1;
+  };
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
     const Object& object = scene.objects[i];
     const Material& material = object.material;
+    // glTF BLEND over a texture with alpha: blended by the texel's alpha too.
+    const bool alphaFromTexel = material.alphaCoverage && material.diffuseMap.present() &&
+                                hasTranslucentTexels(material.diffuseMap.texture);
     DrawItem draw = material.uvProjection == UvProjection::Mesh
                         ? meshRanges[object.mesh]
                         : projectedRanges.at({object.mesh, material.uvProjection});
@@ -181,7 +195,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     int32_t maps = (material.diffuseMap.present() ? TEXTURE_DIFFUSE : 0) |
                    (material.normalMap.present() ? TEXTURE_NORMAL : 0) |
                    (material.heightMap.present() ? TEXTURE_HEIGHT : 0) |
-                   (uvTransform ? TEXTURE_UV_TRANSFORM : 0);
+                   (uvTransform ? TEXTURE_UV_TRANSFORM : 0) | (alphaFromTexel ? TEXTURE_ALPHA : 0);
     draw.constants.object = glm::ivec4(int(i), maps, object.receivesShadows ? 1 : 0,
                                        int32_t(packEmissive(material.emissive)));
     draw.castsShadows = object.castsShadows;
@@ -198,7 +212,7 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
     draw.textured = maps != 0;
     // UV-projected copies share the mesh's positions, so its box.
     draw.worldBounds = transformBounds(meshBounds[object.mesh], object.transform);
-    draw.transparent = material.transparency > 0.0f;
+    draw.transparent = material.transparency > 0.0f || alphaFromTexel;
     gpuScene.anyTransparent |= draw.transparent;
     gpuScene.anyTextured |= draw.textured;
     gpuScene.anyMasked |= draw.masked;
