@@ -144,7 +144,8 @@ void main() {
   if (shadingModel != SHADING_UNLIT) color += drawEmissive();
   if (environmentEnabled && shadingModel != SHADING_UNLIT)
     color += environmentColor(environment, draw.optics.x, draw.optics.y);
-  // kd.w: opacity, 1 - transparency (times a glTF BLEND texel's alpha), for the blended draws. With the
-  // environment term the transmitted light is env(T), so the surface is opaque.
-  outColor = vec4(color, environmentEnabled ? 1.0 : opacity);
+  // kd.w: opacity, 1 - transparency (times a glTF BLEND texel's alpha), for the blended draws.
+  // Where the environment term refracts (kt > 0, not glTF BLEND) the transmitted light is
+  // env(T), so the surface is opaque.
+  outColor = vec4(color, environmentEnabled && environmentRefracts ? 1.0 : opacity);
 }

@@ -613,6 +613,34 @@ TEST(RayTracer, TracesBillboardsAsTheirQuads) {
   expectNear(seen, coverage * glm::vec3(0.5f) + (1.0f - coverage) * blended.background, 1e-5f);
 }
 
+// Seeing through a coverage surface is no bounce: a ray through eight
+// stacked blended cards whose texels cover nothing reaches the background
+// even with no bounces left (it was black past the fifth card, or at once
+// with --bounces 0), and half-covering cards weigh it by 0.5 per card.
+TEST(RayTracer, SeesThroughStackedCoverageWithoutSpendingBounces) {
+  for (uint8_t alpha : {uint8_t(0), uint8_t(128)}) {
+    Scene scene = billboardScene(BillboardKind::Screen, BillboardAlpha::Blend, alpha, glm::vec3(0));
+    scene.camera.eye = {0.0f, 0.0f, 10.0f};  // looking down -z through every card's centre
+    Billboard& cards = scene.billboards[0];
+    cards.anchor = BillboardAnchor::Center;
+    cards.instances.clear();
+    for (int i = 0; i < 8; ++i) cards.instances.push_back(translation({0.0f, 0.0f, -float(i)}));
+    RayTracer tracer(scene);
+    const Ray ray{scene.camera.eye, -scene.camera.eye};
+    TraceSettings settings;
+    settings.maxDepth = 0;
+    TraceStats stats;
+    const glm::vec3 seen = tracer.traceRay(ray, kInf, ray.origin, 0, 1.0f, settings, stats);
+    const float covered = float(alpha) / 255.0f, behind = std::pow(1.0f - covered, 8.0f);
+    // Each card's own colour is Ia ka = 0.5, times its coverage.
+    float expected = 0.0f, through = 1.0f;
+    for (int i = 0; i < 8; ++i, through *= 1.0f - covered) expected += through * covered * 0.5f;
+    expectNear(seen, glm::vec3(expected) + behind * scene.background, 1e-4f);
+    EXPECT_EQ(stats.primaryRays, 1u);
+    EXPECT_EQ(stats.secondaryRays, 8u);  // one per card seen through
+  }
+}
+
 // Billboards face the camera the tracer was built for; rendering after the
 // camera moved would show them turned towards the old one, so it throws.
 TEST(RayTracer, RefusesToRenderBillboardsForAMovedCamera) {

@@ -580,9 +580,10 @@ void replaceInFile(const fs::path& file, const std::string& from, const std::str
 TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
   fs::path shaders = shaderCopy(dir);
   // The edited shader swaps red and blue: a change that is easy to measure.
-  replaceInFile(shaders / "forward_fragment.glsl",
-                "outColor = vec4(color, environmentEnabled ? 1.0 : opacity);",
-                "outColor = vec4(color.bgr, environmentEnabled ? 1.0 : opacity);");
+  replaceInFile(
+      shaders / "forward_fragment.glsl",
+      "outColor = vec4(color, environmentEnabled && environmentRefracts ? 1.0 : opacity);",
+      "outColor = vec4(color.bgr, environmentEnabled && environmentRefracts ? 1.0 : opacity);");
   CommandResult r =
       view("key O\nframes 2\nscreenshot before.png\nkey R\nframes 2\nscreenshot after.png\n", "",
            "SHADELAB_SHADER_DIR=" + shaders.string());
@@ -608,9 +609,10 @@ TEST_F(Viewer, ReloadCompilesShadersFromDisk) {
 
 TEST_F(Viewer, ShaderCompileErrorIsShownAndLastGoodPipelineKept) {
   fs::path shaders = shaderCopy(dir);
-  replaceInFile(shaders / "forward_fragment.glsl",
-                "outColor = vec4(color, environmentEnabled ? 1.0 : opacity);",
-                "outColor = colour;");
+  replaceInFile(
+      shaders / "forward_fragment.glsl",
+      "outColor = vec4(color, environmentEnabled && environmentRefracts ? 1.0 : opacity);",
+      "outColor = colour;");
   CommandResult r = view("key O\nkey R\nframes 2\nscreenshot after.png\n", "",
                          "SHADELAB_SHADER_DIR=" + shaders.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -1,6 +1,7 @@
 #include "measure/shadow_study.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -48,7 +49,12 @@ ShadowTruth traceShadowTruth(const Scene& scene, uint32_t lightIndex, uint32_t w
       if (glm::dot(N, L) <= 0.05f) continue;
       // The tracer's shadow ray: off the surface by an epsilon, to the light.
       Ray shadow{hit->position + N * 1e-3f, point ? toLight : L};
-      std::optional<SurfaceHit> blocker = tracer.intersect(shadow, 0.0f, point ? 1.0f : 1e30f);
+      const float tMax = point ? 1.0f : 1e30f;
+      std::optional<SurfaceHit> blocker = tracer.intersect(shadow, 0.0f, tMax);
+      // What casts no shadow (billboards, objects with "casts_shadows": false) is looked past.
+      while (blocker && (blocker->object >= scene.objects.size() ||
+                         !scene.objects[blocker->object].castsShadows))
+        blocker = tracer.intersect(shadow, std::nextafter(blocker->t, 1e30f), tMax);
       if (!blocker) {
         classes[p] = Pixel::Lit;
         continue;

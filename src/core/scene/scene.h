@@ -142,8 +142,9 @@ struct Material {
   float reflectivity = 0.0f;  // kr: fraction of the reflected ray's colour added, 0..1
   float transparency = 0.0f;  // kt: fraction of the refracted ray's colour added, 0..1
   float ior = 1.5f;           // index of refraction of the inside; the outside is 1 (air)
-  // glTF alphaMode BLEND: kt is 1 - coverage, a share of the pixel the
-  // surface does not cover. The tracer then weighs the local colour by the
+  // glTF alphaMode BLEND (and blended billboards, as the tracer takes them):
+  // kt is 1 - coverage, a share of the pixel the surface does not cover; a
+  // diffuse map's alpha scales the coverage. The tracer then weighs the local colour by the
   // coverage and sees the rest straight through (no refraction, no Fresnel),
   // as the rasteriser's alpha blend does; otherwise kt is Whitted's
   // transmission, added to the full local colour.

@@ -160,6 +160,9 @@ namespace {
 // glTF alphaMode MASK: a ray passes through at most this many cut-away
 // layers of one object before the object counts as missed.
 constexpr int kMaxCutAwayLayers = 1024;
+// Coverage surfaces (glTF BLEND, blended billboards) a ray sees through
+// before what lies further is left black: each is a level of recursion.
+constexpr uint32_t kMaxCoverageLayers = 256;
 }  // namespace
 
 glm::vec2 RayTracer::TracedObject::uvAt(glm::vec3 point, glm::vec3 normal,
@@ -572,30 +575,45 @@ Material RayTracer::materialAt(const Ray& ray, SurfaceHit& hit, float footprint)
   frame.uvPerAlong = derivative(frame.along);
   frame.uvPerAcross = derivative(frame.across);
   const float cosine = std::abs(glm::dot(hit.geometricNormal, incident));
-  return texturedMaterial(material, textures_, frame, footprint, cosine, hit.shadingNormal);
+  // The bumped normal is the surface's: found for its front and turned
+  // with it, as the shaders negate the bumped normal of a back face.
+  const float side = hit.frontFace ? 1.0f : -1.0f;
+  glm::vec3 normal = side * hit.shadingNormal;
+  Material textured = texturedMaterial(material, textures_, frame, footprint, cosine, normal);
+  hit.shadingNormal = side * normal;
+  return textured;
 }
 
 glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth,
                            float weight, const TraceSettings& settings, TraceStats& stats,
-                           RayCone cone, bool cameraRay) const {
+                           RayCone cone, bool cameraRay, uint32_t layers) const {
   const float footprint = cone.width + cone.spread * hit.t * glm::length(ray.direction);
   const RayCone next{footprint, cone.spread};
   const Material material = materialAt(ray, hit, footprint);
   glm::vec3 colour = localShading(hit, material, viewer, settings, stats);
   const float kr = material.reflectivity, kt = material.transparency;
-  // Coverage (glTF BLEND): the surface fills 1 - kt of the pixel.
-  if (material.alphaCoverage) colour *= 1.0f - kt;
-  if (depth >= settings.maxDepth) return colour;
   const glm::vec3 incident = glm::normalize(ray.direction);
+  if (material.alphaCoverage) {
+    // Coverage (glTF BLEND, blended billboards): the surface fills 1 - kt of
+    // the pixel and the rest is what lies behind it, seen straight on. That
+    // is no bounce: it takes no depth, so stacked cards (trees behind trees)
+    // and --bounces 0 show what the rasteriser's blend shows, up to
+    // kMaxCoverageLayers surfaces deep.
+    colour *= 1.0f - kt;
+    if (kt > 0.0f && weight * kt >= settings.minContribution && layers < kMaxCoverageLayers) {
+      const Ray behind = offsetRay(hit, incident, settings.epsilon);
+      colour += kt * traceRay(behind, kInfinity, behind.origin, depth, weight * kt, settings, stats,
+                              next, cameraRay, layers + 1);
+    }
+  }
+  if (depth >= settings.maxDepth) return colour;
   // Of the transmitted share kt, the Fresnel reflectance F goes along the
   // mirror direction and 1 - F is refracted; total internal reflection
   // (F = 1) sends all of it back inside. Entering the object from air
   // (eta = 1 / ior) or leaving it (ior / 1), by the side the ray arrived on.
   std::optional<glm::vec3> refracted;
   float fresnel = 0.0f;
-  if (kt > 0.0f && material.alphaCoverage) {
-    refracted = incident;  // the uncovered share, seen straight through
-  } else if (kt > 0.0f) {
+  if (kt > 0.0f && !material.alphaCoverage) {
     const float eta = hit.frontFace ? 1.0f / material.ior : material.ior;
     refracted = refractDirection(incident, hit.shadingNormal, eta);
     if (!refracted) {
@@ -607,7 +625,8 @@ glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uin
                                hit.frontFace ? outside : inside, hit.frontFace ? inside : outside);
     }
   }
-  const float reflectedWeight = kr + kt * fresnel, transmittedWeight = kt * (1.0f - fresnel);
+  const float reflectedWeight = kr + kt * fresnel,
+              transmittedWeight = refracted ? kt * (1.0f - fresnel) : 0.0f;
   if (reflectedWeight > 0.0f && weight * reflectedWeight >= settings.minContribution) {
     const Ray reflected =
         offsetRay(hit, mirrorDirection(incident, hit.shadingNormal), settings.epsilon);
@@ -616,21 +635,20 @@ glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uin
   }
   if (transmittedWeight > 0.0f && weight * transmittedWeight >= settings.minContribution) {
     const Ray transmitted = offsetRay(hit, glm::normalize(*refracted), settings.epsilon);
-    // Seen through a BLEND surface's uncovered share, the camera's view goes on.
-    colour += transmittedWeight * traceRay(transmitted, kInfinity, transmitted.origin, depth + 1,
-                                           weight * transmittedWeight, settings, stats, next,
-                                           cameraRay && material.alphaCoverage);
+    colour +=
+        transmittedWeight * traceRay(transmitted, kInfinity, transmitted.origin, depth + 1,
+                                     weight * transmittedWeight, settings, stats, next, false);
   }
   return colour;
 }
 
 glm::vec3 RayTracer::traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth,
                               float weight, const TraceSettings& settings, TraceStats& stats,
-                              RayCone cone, bool cameraRay) const {
-  ++(depth == 0 ? stats.primaryRays : stats.secondaryRays);
+                              RayCone cone, bool cameraRay, uint32_t layers) const {
+  ++(depth == 0 && layers == 0 ? stats.primaryRays : stats.secondaryRays);
   std::optional<SurfaceHit> hit = intersect(ray, 0.0f, tMax, cameraRay);
   if (!hit) return missColour(scene_, ray.direction);
-  return shade(ray, *hit, viewer, depth, weight, settings, stats, cone, cameraRay);
+  return shade(ray, *hit, viewer, depth, weight, settings, stats, cone, cameraRay, layers);
 }
 
 // The box-filtered mean of the pixel's n x n stratified samples, each with

@@ -135,7 +135,8 @@ class RayTracer {
   // custom meshes). Procedural curved meshes are rebuilt at
   // `tessellationScale` times their tessellation first (up to 256k
   // triangles per mesh), so the reference is closer to the true surface
-  // than the rasterised mesh.
+  // than the rasterised mesh. Billboards become the quads the rasteriser
+  // draws for the scene's camera as it is now (core/scene/billboard_quad.h).
   // `scene` must outlive the tracer.
   explicit RayTracer(const Scene& scene, float tessellationScale = 4.0f);
   // A temporary scene would not: `RayTracer tracer(makeScene())` kept a
@@ -146,7 +147,9 @@ class RayTracer {
   RayTracer(const RayTracer&) = delete;
   RayTracer& operator=(const RayTracer&) = delete;
 
-  // Throws InputError for an impossible size or a non-square sample count.
+  // Throws InputError for an impossible size or a non-square sample count,
+  // std::logic_error when the scene has billboards and its camera moved
+  // since the tracer was built (they would face the old one).
   TraceResult render(const TraceSettings& settings) const;
 
   // The colour seen along `ray` for tMin < t < tMax. `viewer` is where V
@@ -156,9 +159,11 @@ class RayTracer {
   // camera sees straight on (a camera ray, or one through the uncovered
   // share of glTF BLEND surfaces), which passes the back faces the
   // rasteriser culls (intersect).
+  // `layers`: the coverage surfaces already seen through on the way
+  // (shade), which take no depth.
   glm::vec3 traceRay(const Ray& ray, float tMax, glm::vec3 viewer, uint32_t depth, float weight,
                      const TraceSettings& settings, TraceStats& stats, RayCone cone = {},
-                     bool cameraRay = true) const;
+                     bool cameraRay = true, uint32_t layers = 0) const;
   // The nearest hit for tMin < t < tMax. A camera ray (`cameraRay`) passes
   // the back faces of single-sided surfaces, as the rasteriser culls them
   // (Material::doubleSided); reflected, refracted and shadow rays see both
@@ -182,8 +187,8 @@ class RayTracer {
   bool nearestKeptHit(const TracedObject& object, const Ray& local, float tMin, float tMax,
                       bool cullBackFaces, LocalHit& hit, glm::vec3& geometric) const;
   glm::vec3 shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth, float weight,
-                  const TraceSettings& settings, TraceStats& stats, RayCone cone,
-                  bool cameraRay) const;
+                  const TraceSettings& settings, TraceStats& stats, RayCone cone, bool cameraRay,
+                  uint32_t layers) const;
   // The material at a hit with its textures applied (the diffuse texel,
   // the bumped shading normal written into `hit`), filtered over `footprint`.
   Material materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const;

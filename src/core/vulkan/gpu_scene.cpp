@@ -205,8 +205,11 @@ GpuScene uploadScene(const Context& context, const Scene& scene, bool detailChai
                                  glm::length(glm::vec3(object.transform[1])),
                                  glm::length(glm::vec3(object.transform[2]))});
     draw.constants.texturing = glm::vec4(material.uvScale, material.bumpScale, diffuseUv.rotation);
+    // A coverage material (glTF BLEND) is blended, never refracted by the
+    // environment term: no kt for it (forward_fragment.glsl writes its opacity).
     draw.constants.optics =
-        glm::vec4(material.reflectivity, material.transparency, material.ior, normalUv.rotation);
+        glm::vec4(material.reflectivity, material.alphaCoverage ? 0.0f : material.transparency,
+                  material.ior, normalUv.rotation);
     draw.constants.diffuseUv = glm::vec4(diffuseUv.offset, diffuseUv.scale);
     draw.constants.normalUv = glm::vec4(normalUv.offset, normalUv.scale);
     draw.textured = maps != 0;
