@@ -641,6 +641,25 @@ TEST(RayTracer, SeesThroughStackedCoverageWithoutSpendingBounces) {
   }
 }
 
+// A glTF BLEND card's shadow: a shadow ray passes what the texel leaves
+// uncovered, (1 - kt) times the texel's alpha, once per crossing.
+TEST(RayTracer, BlendedCardsPassTheLightTheirTexelsDoNotCover) {
+  Scene scene;
+  scene.textures.push_back(solidTexture({255, 255, 255, 64}, TextureRole::Color, "texel"));
+  Material card;
+  card.alphaCoverage = true;
+  card.transparency = 0.5f;
+  card.diffuseMap.texture = 0;
+  const uint32_t plane = scene.addShape({ShapeKind::Plane, 4.0f});
+  scene.objects.push_back({"card", plane, translation({0, 1, 0}), card});
+  scene.objects.push_back({"card above", plane, translation({0, 2, 0}), card});
+  RayTracer tracer(scene);
+  const float passes = 1.0f - 0.5f * 64.0f / 255.0f;
+  const Ray up{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+  EXPECT_NEAR(tracer.transmittance(up, 1.5f), passes, 1e-6f);
+  EXPECT_NEAR(tracer.transmittance(up, kInf), passes * passes, 1e-6f);
+}
+
 // Billboards face the camera the tracer was built for; rendering after the
 // camera moved would show them turned towards the old one, so it throws.
 TEST(RayTracer, RefusesToRenderBillboardsForAMovedCamera) {

@@ -466,6 +466,18 @@ float RayTracer::transmittance(const Ray& ray, float tMax, bool fresnel) const {
       }
       continue;
     }
+    if (object.alphaCoverage && object.material->diffuseMap.present()) {
+      // glTF BLEND over a texture: each crossing passes what its texel
+      // leaves uncovered (a leaf card's holes let the light through).
+      LocalHit hit;
+      glm::vec3 geometric;
+      for (float from = 0.0f; nearestKeptHit(object, local, from, tMax, false, hit, geometric);
+           from = std::nextafter(hit.t, kInfinity)) {
+        passed *= 1.0f - coverage(*object.material, textures_, object.hitUv(local, hit, geometric));
+        if (passed <= 0.0f) return 0.0f;
+      }
+      continue;
+    }
     if (!fresnel || object.transparency <= 0.0f || object.alphaCoverage) {
       const uint32_t crossings = object.countHits(local, tMax);
       if (crossings == 0) continue;

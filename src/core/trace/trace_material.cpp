@@ -127,6 +127,16 @@ Material texturedMaterial(const Material& material, const std::vector<TraceTextu
   return result;
 }
 
+float coverage(const Material& material, const std::vector<TraceTexture>& textures, glm::vec2 uv) {
+  const float opacity = 1.0f - material.transparency;
+  if (!material.diffuseMap.present()) return opacity;
+  const Lookup lookup =
+      transformed({textureCoordinate(uv, material.uvScale), {}, {}}, material.diffuseMap.transform);
+  const TraceTexture& texture = textures[size_t(material.diffuseMap.texture)];
+  return opacity *
+         glm::clamp(texture.sample(lookup.st, 0.0f, material.diffuseMap.sampler).a, 0.0f, 1.0f);
+}
+
 bool cutAway(const Material& material, const std::vector<TraceTexture>& textures, glm::vec2 uv) {
   if (!(material.alphaCutoff > 0.0f)) return false;
   // alpha x texel < cutoff, as the shaders compare texel < cutoff / alpha.

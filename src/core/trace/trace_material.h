@@ -48,4 +48,8 @@ Material texturedMaterial(const Material& material, const std::vector<TraceTextu
 // footprint picks (shaders/forward_fragment.glsl).
 bool cutAway(const Material& material, const std::vector<TraceTexture>& textures, glm::vec2 uv);
 
+// A coverage material's (Material::alphaCoverage) share of a shadow ray it
+// stops at `uv`: 1 - transparency times the base level's diffuse alpha.
+float coverage(const Material& material, const std::vector<TraceTexture>& textures, glm::vec2 uv);
+
 }  // namespace shadelab
