@@ -509,7 +509,8 @@ Ray RayTracer::offsetRay(const SurfaceHit& hit, glm::vec3 direction, float epsil
 // Phong at the hit with the unshadowed lights only, moved so the viewer sits
 // at the origin, which is where lighting.cpp (like the shader's eye space)
 // takes V from. At most MAX_LIGHTS, as the shaders see.
-glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& material, glm::vec3 viewer,
+glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& material,
+                                  bool receivesShadows, glm::vec3 viewer,
                                   const TraceSettings& settings, TraceStats& stats) const {
   std::array<Light, MAX_LIGHTS> lit;
   uint32_t visible = 0;
@@ -528,7 +529,7 @@ glm::vec3 RayTracer::localShading(const SurfaceHit& hit, const Material& materia
     float passed = 1.0f;
     // The scene's switches, as the shadow maps obey them: a light with
     // "shadows": false, an object that receives none.
-    if (settings.shadows && light.shadows && tracedObject(hit.object).receivesShadows) {
+    if (settings.shadows && light.shadows && receivesShadows) {
       Ray shadow = offsetRay(hit, toLight, settings.epsilon);
       if (point) shadow.direction = light.position - shadow.origin;  // the segment is 0 < t < 1
       ++stats.shadowRays;
@@ -560,8 +561,8 @@ const Material& RayTracer::material(const SurfaceHit& hit) const {
   return *tracedObject(hit.object).material;
 }
 
-Material RayTracer::materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const {
-  const TracedObject& object = tracedObject(hit.object);
+Material RayTracer::materialAt(const Ray& ray, const TracedObject& object, SurfaceHit& hit,
+                               float footprint) const {
   const Material& material = *object.material;
   if (!material.diffuseMap.present() && !material.normalMap.present() &&
       !material.heightMap.present())
@@ -601,8 +602,10 @@ glm::vec3 RayTracer::shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uin
                            RayCone cone, bool cameraRay, uint32_t layers) const {
   const float footprint = cone.width + cone.spread * hit.t * glm::length(ray.direction);
   const RayCone next{footprint, cone.spread};
-  const Material material = materialAt(ray, hit, footprint);
-  glm::vec3 colour = localShading(hit, material, viewer, settings, stats);
+  // Looked up once per hit (a binary search over the objects).
+  const TracedObject& object = tracedObject(hit.object);
+  const Material material = materialAt(ray, object, hit, footprint);
+  glm::vec3 colour = localShading(hit, material, object.receivesShadows, viewer, settings, stats);
   const float kr = material.reflectivity, kt = material.transparency;
   const glm::vec3 incident = glm::normalize(ray.direction);
   if (material.alphaCoverage) {

@@ -189,11 +189,13 @@ class RayTracer {
   glm::vec3 shade(const Ray& ray, SurfaceHit hit, glm::vec3 viewer, uint32_t depth, float weight,
                   const TraceSettings& settings, TraceStats& stats, RayCone cone, bool cameraRay,
                   uint32_t layers) const;
-  // The material at a hit with its textures applied (the diffuse texel,
-  // the bumped shading normal written into `hit`), filtered over `footprint`.
-  Material materialAt(const Ray& ray, SurfaceHit& hit, float footprint) const;
-  glm::vec3 localShading(const SurfaceHit& hit, const Material& material, glm::vec3 viewer,
-                         const TraceSettings& settings, TraceStats& stats) const;
+  // The material of `object` (the one hit) with its textures applied (the
+  // diffuse texel, the bumped shading normal written into `hit`), filtered
+  // over `footprint`.
+  Material materialAt(const Ray& ray, const TracedObject& object, SurfaceHit& hit,
+                      float footprint) const;
+  glm::vec3 localShading(const SurfaceHit& hit, const Material& material, bool receivesShadows,
+                         glm::vec3 viewer, const TraceSettings& settings, TraceStats& stats) const;
   Ray offsetRay(const SurfaceHit& hit, glm::vec3 direction, float epsilon) const;
   glm::vec3 tracePixel(const CameraRays& camera, uint32_t x, uint32_t y, uint32_t grid,
                        const TraceSettings& settings, TraceStats& stats) const;
