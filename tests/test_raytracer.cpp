@@ -660,6 +660,57 @@ TEST(RayTracer, BlendedCardsPassTheLightTheirTexelsDoNotCover) {
   EXPECT_NEAR(tracer.transmittance(up, kInf), passes * passes, 1e-6f);
 }
 
+// A normal map on a double-sided plane (normal +y, tangent +x) tilts the
+// front's normal to (0.6, 0.8, 0); seen from below, the surface's normal is
+// that one negated, as the shaders negate the bumped normal of a back face
+// (the mirrored tilt, (0.6, -0.8, 0), lit 0.28 here). Lit by a light
+// straight along that normal, N.L = 1.
+TEST(RayTracer, BackFacesAreBumpedAsTheFrontNegated) {
+  Scene scene;
+  scene.ambient = glm::vec3(0.0f);
+  scene.textures.push_back(solidTexture({204, 128, 230, 255}, TextureRole::Data, "tilt"));
+  Material bumped;
+  bumped.kd = glm::vec3(1.0f);
+  bumped.ks = glm::vec3(0.0f);
+  bumped.normalMap.texture = 0;
+  bumped.doubleSided = true;
+  scene.objects.push_back(
+      {"plane", scene.addShape({ShapeKind::Plane, 4.0f}), glm::mat4(1.0f), bumped});
+  TraceSettings settings;
+  settings.shadows = false;
+  for (float side : {1.0f, -1.0f}) {
+    scene.lights = {
+        {LightType::Directional, {}, -side * glm::vec3(0.6f, 0.8f, 0.0f), glm::vec3(1.0f)}};
+    RayTracer tracer(scene);
+    const Ray ray{{0.0f, 5.0f * side, 0.0f}, {0.0f, -side, 0.0f}};
+    TraceStats stats;
+    const glm::vec3 lit =
+        tracer.traceRay(ray, kInf, ray.origin, 0, 1.0f, settings, stats, {}, false);
+    EXPECT_NEAR(lit.r, 1.0f, 0.01f) << (side > 0 ? "front" : "back");
+  }
+}
+
+// Billboard sizes and positions near the float range (the scene format
+// takes any finite number): the quads are built and traced without a
+// throw, and every pixel stays finite.
+TEST(RayTracer, BillboardsNearTheFloatRangeTraceFinite) {
+  Scene scene = billboardScene(BillboardKind::Spherical, BillboardAlpha::Test, 255, glm::vec3(0));
+  scene.billboards[0].size = {1e30f, 1e30f};
+  scene.billboards[0].instances.push_back(translation({3e38f, 0.0f, 0.0f}));
+  scene.billboards[0].instances.push_back(translation({0.0f, 0.0f, 10.0f}));
+  RayTracer tracer(scene);
+  TraceSettings settings;
+  settings.width = 8, settings.height = 6;
+  TraceResult result;
+  ASSERT_NO_THROW(result = tracer.render(settings));
+  for (uint32_t y = 0; y < settings.height; ++y)
+    for (uint32_t x = 0; x < settings.width; ++x) {
+      const glm::vec4 pixel = result.image.at(x, y);
+      EXPECT_TRUE(std::isfinite(pixel.r) && std::isfinite(pixel.g) && std::isfinite(pixel.b))
+          << x << "," << y;
+    }
+}
+
 // Billboards face the camera the tracer was built for; rendering after the
 // camera moved would show them turned towards the old one, so it throws.
 TEST(RayTracer, RefusesToRenderBillboardsForAMovedCamera) {
