@@ -513,6 +513,24 @@ TEST_F(Cli, CompareKeepsTheRasterReference) {
   EXPECT_NE(readText(out("sheet.json")).find("4x MSAA"), std::string::npos);
 }
 
+// The triangle budget counts the raster reference's 4x only when it is
+// drawn: the traced reference traces the scene as loaded. Between the default
+// scene's 4,972 triangles at 1x and 80,524 at 4x, the traced compare runs and
+// the raster one is refused, naming its reference. (Before, both were refused,
+// and `compare lod` could not run at the default budget.)
+TEST_F(Cli, CompareBudgetsTheRasterReferenceOnlyWhenItIsDrawn) {
+  std::string budget = " --size 32x18 --modes phong --max-triangles 20000";
+  CommandResult traced = run("compare -o " + out("traced.png") + budget);
+  EXPECT_EQ(traced.exitCode, 0) << traced.output;
+  CommandResult raster = run("compare -o " + out("raster.png") + budget + " --reference raster");
+  EXPECT_EQ(raster.exitCode, 2) << raster.output;
+  EXPECT_NE(raster.output.find("(its raster reference is 4x, its columns' tess up to 1.000x): "
+                               "an estimated 80524 triangles"),
+            std::string::npos)
+      << raster.output;
+  EXPECT_FALSE(std::filesystem::exists(out("raster.png")));
+}
+
 // On a scene with an environment the sheet gains the traced reflection
 // regions and each mode's FLIP split by them; a third row makes it taller.
 TEST_F(Cli, CompareSplitsEnvironmentMappingErrorByReflectionRegion) {
