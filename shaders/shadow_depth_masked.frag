@@ -1,7 +1,8 @@
 #version 460
-// alphaMode MASK in the shadow maps: a fragment whose base colour texel's
-// alpha is below the threshold (alphaCutoff / the factor's alpha, as the
-// forward pass tests it) casts no shadow.
+// alphaMode MASK and BLEND in the shadow maps: a fragment whose base colour
+// texel's alpha is below the threshold (MASK: alphaCutoff / the factor's
+// alpha, as the forward pass tests it; BLEND: one half, shadow_pass.cpp)
+// casts no shadow.
 #extension GL_GOOGLE_include_directive : require
 #include "interface.h"
 #include "uv_transform.glsl"

@@ -21,9 +21,22 @@ struct MaskedShadowDraw {
   glm::vec4 diffuseUv;  // KHR_texture_transform: xy = offset, zw = scale
 };
 
-// A caster whose base colour texture's alpha cuts holes in its shadow.
+// A caster whose base colour texture's alpha cuts holes in its shadow:
+// alphaMode MASK below its cut-off, and BLEND over a texture with alpha
+// (TEXTURE_ALPHA) where the texel covers less than half. A map holds depth,
+// not how much light passes, so a blended texel either casts or not; the
+// tracer's shadow rays pass 1 - alpha. The factor's alpha is left out, as
+// every transparent caster is drawn whole.
+constexpr float kBlendCasterCoverage = 0.5f;
+
 bool isMaskedCaster(const DrawItem& draw) {
-  return draw.masked && draw.textured && (draw.constants.object.y & TEXTURE_DIFFUSE);
+  int32_t maps = draw.constants.object.y;
+  return draw.textured && (maps & TEXTURE_DIFFUSE) && (draw.masked || (maps & TEXTURE_ALPHA));
+}
+
+// The texel alpha below which a masked caster's fragment casts nothing.
+float casterAlphaThreshold(const DrawItem& draw) {
+  return draw.masked ? draw.constants.ka.w : kBlendCasterCoverage;
 }
 }  // namespace
 
@@ -350,7 +363,7 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
         const gpu::DrawConstants& constants = draw.constants;
         MaskedShadowDraw push{objectToClip,
                               glm::vec4(constants.texturing.x, constants.texturing.y,
-                                        constants.ka.w, constants.texturing.w),
+                                        casterAlphaThreshold(draw), constants.texturing.w),
                               constants.diffuseUv};
         vkCmdPushConstants(cmd, maskedLayout_,
                            VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
