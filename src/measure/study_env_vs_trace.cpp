@@ -10,6 +10,7 @@
 #include "core/metrics/chart.h"
 #include "core/metrics/metrics.h"
 #include "core/scene/shading.h"
+#include "core/scene/shadows.h"
 #include "core/trace/raytracer.h"
 #include "core/trace/reflection_regions.h"
 #include "measure/study.h"
@@ -50,8 +51,10 @@ StudyResult runEnvVsTraceStudy(const StudyOptions& options, const StudyServices&
   double position = 1.0;
   for (ShadingModel model :
        {ShadingModel::Flat, ShadingModel::Gouraud, ShadingModel::Phong, ShadingModel::BlinnPhong}) {
-    const ImageRgba raster =
-        renderer.renderToImage(scene, {options.width, options.height, model}).image;
+    // Shadowed as the trace is, and as `compare env`'s columns are by default.
+    RenderSettings settings{options.width, options.height, model};
+    settings.shadows = kDefaultShadowMethod;
+    const ImageRgba raster = renderer.renderToImage(scene, settings).image;
     const ImageU8 rasterU8 = encodeSrgb8(raster);
     const MetricMap flip = flipError(referenceU8, rasterU8);
     const MetricMap before = flipError(referenceWithoutFresnel, rasterU8);
