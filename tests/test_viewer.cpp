@@ -85,6 +85,31 @@ TEST_F(Viewer, LevelsOfDetailMatchHeadlessRenderWithTheSameBound) {
   EXPECT_LT(2.0 * toLevels, toFull);
 }
 
+// The key help at 640x360 leaves room for the message line under it: the
+// message (drawn in its yellow, which the default scene does not show) is a
+// whole line of text inside the window. Before, the help's table was sized
+// without the message and its rows' padding, and the message fell off the
+// window's bottom edge (no yellow row above the last 8 pixels).
+TEST_F(Viewer, KeyHelpLeavesTheMessageInsideTheWindow) {
+  CommandResult r = view("key S\nkey H\nframes 3\nscreenshot help.png\n", "", "", "640x360");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("view: shadows: hard"), std::string::npos) << r.output;
+  const ImageU8 shot = readImageU8(path("help.png"));
+  ASSERT_EQ(shot.width, 640u);
+  uint32_t top = shot.height, bottom = 0;
+  for (uint32_t y = 0; y < shot.height; ++y)
+    for (uint32_t x = 0; x < shot.width; ++x) {
+      const uint8_t* p = &shot.pixels[(size_t(y) * shot.width + x) * 4];
+      if (p[0] >= 230 && p[1] >= 180 && p[1] <= 235 && p[2] <= 110) {
+        top = std::min(top, y);
+        bottom = std::max(bottom, y);
+      }
+    }
+  ASSERT_LT(top, shot.height) << "no message pixels";
+  EXPECT_GE(bottom - top + 1, 8u) << "the message is cut: rows " << top << ".." << bottom;
+  EXPECT_LT(bottom, shot.height - 8) << "the message reaches the window's edge";
+}
+
 TEST_F(Viewer, EachShadingModelMatchesHeadlessRender) {
   CommandResult r = view(
       "key O\n"  // overlay off: the presented frame is the scene alone

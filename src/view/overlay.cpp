@@ -148,44 +148,57 @@ void Overlay::setTargets(const std::vector<VkImageView>& views, VkExtent2D exten
 
 // The help panel fills the window's width and takes as many columns (up to
 // four) as its lines need to fit its height, each line wrapped to its
-// column; lines are laid out down the first column, then the next. Leaves
-// the panel open for the caller to add to and end.
-void Overlay::drawHelp(const std::vector<std::string>& lines, int flags) const {
+// column (or, where no count fits, the count whose table is least tall);
+// lines are laid out down the first column, then the next. Leaves the panel
+// open for the caller to add to and end.
+void Overlay::drawHelp(const std::vector<std::string>& lines, int flags, float below) const {
   const ImGuiStyle& style = ImGui::GetStyle();
+  // Rows without vertical padding: the keys fit a 640x360 window in two columns.
+  const ImVec2 cellPadding(style.CellPadding.x, 0.0f);
   const float width = std::max(float(extent_.width) - 16.0f, 64.0f);
   const float height =
-      std::max(float(extent_.height) - 16.0f - 2.0f * style.WindowPadding.y, 16.0f);
+      std::max(float(extent_.height) - 16.0f - 2.0f * style.WindowPadding.y - below, 16.0f);
   const float lineHeight = ImGui::GetTextLineHeightWithSpacing();
-  auto columnHeights = [&](int columns, size_t rows) {
+  // The table's height: each row as tall as its most wrapped cell.
+  auto tableHeight = [&](int columns, size_t rows) {
     float cellWidth =
-        (width - 2.0f * style.WindowPadding.x) / float(columns) - 2.0f * style.CellPadding.x;
-    std::vector<float> heights(size_t(columns), 0.0f);
+        (width - 2.0f * style.WindowPadding.x) / float(columns) - 2.0f * cellPadding.x;
+    std::vector<float> rowLines(rows, 0.0f);
     for (size_t i = 0; i < lines.size(); ++i) {
       float textWidth = ImGui::CalcTextSize(lines[i].c_str()).x;
       float wrapped = std::max(1.0f, std::ceil(textWidth / std::max(cellWidth, 1.0f)));
-      heights[i / rows] += wrapped * lineHeight;
+      rowLines[i % rows] = std::max(rowLines[i % rows], wrapped);
     }
-    return *std::max_element(heights.begin(), heights.end());
+    float total = 0.0f;
+    for (float wrapped : rowLines) total += wrapped * lineHeight;
+    return total;
+  };
+  auto rowsFor = [&](int columns) {
+    return (lines.size() + size_t(columns) - 1) / size_t(columns);
   };
   int columns = 1;
-  size_t rows = lines.size();
-  for (; columns < 4; ++columns) {
-    rows = (lines.size() + size_t(columns) - 1) / size_t(columns);
-    if (columnHeights(columns, rows) <= height) break;
+  float least = tableHeight(1, rowsFor(1));
+  for (int count = 1; count <= 4; ++count) {
+    float tall = tableHeight(count, rowsFor(count));
+    if (tall <= height) {
+      columns = count;
+      break;
+    }
+    if (tall < least) least = tall, columns = count;
   }
-  rows = (lines.size() + size_t(columns) - 1) / size_t(columns);
+  const size_t rows = rowsFor(columns);
   float panelWidth = width;
   if (columns == 1) {  // one column: as wide as its longest line
     float longest = 0.0f;
     for (const std::string& line : lines)
       longest = std::max(longest, ImGui::CalcTextSize(line.c_str()).x);
-    panelWidth =
-        std::min(width, longest + 2.0f * (style.WindowPadding.x + style.CellPadding.x) + 1.0f);
+    panelWidth = std::min(width, longest + 2.0f * (style.WindowPadding.x + cellPadding.x) + 1.0f);
   }
   ImGui::SetNextWindowPos(ImVec2(8, 8));
   ImGui::SetNextWindowSize(ImVec2(panelWidth, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.8f);
   ImGui::Begin("help", nullptr, flags & ~ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, cellPadding);
   if (ImGui::BeginTable("keys", columns, ImGuiTableFlags_SizingStretchSame)) {
     for (size_t row = 0; row < rows; ++row) {
       ImGui::TableNextRow();
@@ -197,6 +210,7 @@ void Overlay::drawHelp(const std::vector<std::string>& lines, int flags) const {
     }
     ImGui::EndTable();
   }
+  ImGui::PopStyleVar();
 }
 
 void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText& text,
@@ -209,12 +223,13 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  const float messageWrap = float(extent_.width) * 0.9f;
   auto drawMessage = [&] {
     if (text.message.empty()) return;
     ImVec4 colour =
         text.messageIsError ? ImVec4(1.0f, 0.25f, 0.2f, 1.0f) : ImVec4(1.0f, 0.85f, 0.3f, 1.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, srgbTarget_ ? decoded(colour) : colour);
-    ImGui::PushTextWrapPos(float(extent_.width) * 0.9f);
+    ImGui::PushTextWrapPos(messageWrap);
     ImGui::TextUnformatted(text.message.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
@@ -227,7 +242,13 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
     drawMessage();
     ImGui::End();
   } else {
-    drawHelp(text.help, flags);  // in the status panel's place, so the two never overlap
+    // In the status panel's place, so the two never overlap; the message
+    // goes under the keys (the panel starts 8 pixels in, wrapping at messageWrap).
+    float below = 0.0f;
+    if (!text.message.empty())
+      below = ImGui::CalcTextSize(text.message.c_str(), nullptr, false, messageWrap - 8.0f).y +
+              ImGui::GetStyle().ItemSpacing.y;
+    drawHelp(text.help, flags, below);
     drawMessage();
     ImGui::End();
   }

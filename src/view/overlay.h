@@ -45,7 +45,9 @@ class Overlay {
   VkExtent2D extent_{0, 0};
   bool srgbTarget_ = false;
   void destroyFramebuffers();
-  void drawHelp(const std::vector<std::string>& lines, int flags) const;
+  // `below`: the height the caller adds to the panel after the lines (the
+  // message line), kept free so that it stays inside the window.
+  void drawHelp(const std::vector<std::string>& lines, int flags, float below) const;
 };
 
 }  // namespace shadelab
