@@ -192,7 +192,8 @@ struct ObjectData {
 // rotations) applies; without it st is used as is.
 #define TEXTURE_UV_TRANSFORM 16
 // glTF BLEND (Material::alphaCoverage) with a diffuse map: the texel's alpha
-// scales the opacity kd.w the blended draw writes.
+// scales the opacity kd.w the blended draw writes (and, in the shadow maps,
+// cuts holes where it is below one half: shadow_pass.cpp).
 #define TEXTURE_ALPHA 32
 
 // Per draw, as push constants: the material and the object's index. Fragment

@@ -1,7 +1,8 @@
 #version 460
-// Shadow pass for casters with alphaMode MASK and a base colour texture: the
-// depth-only pass plus the texture coordinate, so that the fragment stage
-// (shadow_depth_masked.frag) cuts the same holes the forward pass does.
+// Shadow pass for casters with alphaMode MASK and a base colour texture (and
+// BLEND ones whose texture has alpha): the depth-only pass plus the texture
+// coordinate, so that the fragment stage (shadow_depth_masked.frag) cuts the
+// holes their texels' alpha leaves.
 #extension GL_GOOGLE_include_directive : require
 #include "interface.h"
 

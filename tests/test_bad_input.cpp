@@ -168,6 +168,14 @@ const std::vector<BadCase>& badCases() {
        kError + "scene 'planes' at its own tessellation (before building): an estimated "
                 "134217728 triangles drawn ("},
       {Group::Options,
+       "compare tess=auto column over the budget",
+       {{"ball.json", R"({"objects": [{"shape": "sphere", "tessellation": 4}]})"}},
+       "compare {dir}/ball.json -o {dir}/s.png --size 320x180 --column phong,tess=auto "
+       "--column flat --max-triangles 200",
+       2,
+       kError + "scene 'ball' at compare (a tess=auto column, for its view): an estimated 440 "
+                "triangles"},
+      {Group::Options,
        "max-triangles zero",
        {},
        render + "--max-triangles 0",

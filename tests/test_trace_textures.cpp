@@ -265,6 +265,9 @@ TEST_F(TraceEnvironment, GltfBlendCoversTheTexelsAlpha) {
 // each half, the rasteriser's hard shadow must be what the tracer's shadow
 // ray finds: lit under the clear half, dark under the opaque one, both within
 // 6 of 255 of the trace. The code before this test shaded both halves.
+// Then the threshold, raster only: texels of alpha 100 and 160 (either side
+// of one half) leave the floor lit and dark; and the factor's alpha is left
+// out (a card of transparency 0.5 still casts where its texels do).
 TEST_F(TraceEnvironment, BlendedCardsCastOnlyWhatTheirTexelsCover) {
   Scene scene;
   scene.camera.eye = {0.0f, 0.5f, 4.0f};
@@ -312,6 +315,22 @@ TEST_F(TraceEnvironment, BlendedCardsCastOnlyWhatTheirTexelsCover) {
     litHalves += std::abs(expected - lit) <= 6;
   }
   EXPECT_EQ(litHalves, 1);  // the scene shows both cases: one half lit, one shaded
+  const int clearHalf = green(traced, {-0.5f, 0.0f, 0.0f});
+  const int opaqueHalf = green(traced, {0.5f, 0.0f, 0.0f});
+  auto rasterHalves = [&](uint8_t left, uint8_t right, float transparency) {
+    Scene changed = scene;
+    changed.textures[0].rgba8[3] = left;
+    changed.textures[0].rgba8[7] = right;
+    changed.objects[1].material.transparency = transparency;
+    const ImageU8 image = encodeSrgb8(renderer().renderToImage(changed, settings).image);
+    return std::pair(green(image, {-0.5f, 0.0f, 0.0f}), green(image, {0.5f, 0.0f, 0.0f}));
+  };
+  const auto [below, above] = rasterHalves(100, 160, 0.0f);
+  EXPECT_NEAR(below, clearHalf, 2) << "alpha 100 casts";
+  EXPECT_NEAR(above, opaqueHalf, 2) << "alpha 160 casts nothing";
+  const auto [clear, covered] = rasterHalves(0, 255, 0.5f);
+  EXPECT_NEAR(clear, clearHalf, 2);
+  EXPECT_NEAR(covered, opaqueHalf, 2) << "the factor's alpha changed the shadow";
 }
 
 // A checker floor, a mirror sphere and a dimpled (height-mapped) sphere

@@ -229,6 +229,16 @@ ComparePlan planCompare(const CompareOptions& options, const GlobalOptions& glob
       std::string("compare (") + (rasterReference ? "its raster reference is 4x, " : "") +
           "its columns' tess up to " + fixed(columnsFinest, 3) + "x)",
       "--max-triangles");
+  // A tess=auto column's tessellation comes from the view: estimated as it will be built.
+  for (const CompareColumn& column : plan.columns)
+    if (column.autoTessellation) {
+      Scene tessellated = plan.scene;
+      tessellateForView(tessellated, ViewSize{plan.scene.camera, plan.cell.width, plan.cell.height},
+                        kCompareAutoTessellationErrorPixels);
+      checkTriangleBudget(tessellated, 1.0f, global.maxTriangles,
+                          "compare (a tess=auto column, for its view)", "--max-triangles");
+      break;  // every auto column tessellates for the same view
+    }
   printSceneWarnings(plan.scene, true);
   // Once per depth mode the columns use.
   std::vector<DepthMode> warned;

@@ -52,7 +52,7 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
   layout_ = PipelineLayout(device, layout);
   vertex_ = loadShader(device, "shadow_depth.vert");
 
-  // alphaMode MASK casters: the same state with the uv and a fragment stage.
+  // Masked casters (isMaskedCaster): the same state with the uv and a fragment stage.
   VkPushConstantRange maskedPush{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                  sizeof(MaskedShadowDraw)};
   VkPipelineLayoutCreateInfo maskedLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};

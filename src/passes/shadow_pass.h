@@ -5,7 +5,9 @@
 // Reads: the scene's vertex and index buffers (positions only); the draws
 // whose object casts shadows, culled against each view's frustum. Casters
 // with alphaMode MASK and a base colour texture also read their uv and their
-// material's set (ForwardPass's material layout) and cut the same holes.
+// material's set (ForwardPass's material layout) and cut the same holes; so
+// do BLEND ones over a texture with alpha, where a texel covers less than
+// half (shadow_pass.cpp).
 // Writes: its depth array, left in ShaderRead use for the forward pass
 // (BINDING_SHADOW_MAP, a compare sampler).
 // Keeps: a layer whose view and casters (their transforms, after culling)

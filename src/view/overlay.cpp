@@ -153,24 +153,22 @@ void Overlay::setTargets(const std::vector<VkImageView>& views, VkExtent2D exten
 // open for the caller to add to and end.
 void Overlay::drawHelp(const std::vector<std::string>& lines, int flags, float below) const {
   const ImGuiStyle& style = ImGui::GetStyle();
-  // Rows without vertical padding: the keys fit a 640x360 window in two columns.
+  // Rows without vertical padding: at 640x360 the keys then fit in two columns.
   const ImVec2 cellPadding(style.CellPadding.x, 0.0f);
   const float width = std::max(float(extent_.width) - 16.0f, 64.0f);
   const float height =
       std::max(float(extent_.height) - 16.0f - 2.0f * style.WindowPadding.y - below, 16.0f);
-  const float lineHeight = ImGui::GetTextLineHeightWithSpacing();
-  // The table's height: each row as tall as its most wrapped cell.
+  // The table's height: each row as tall as its most wrapped cell (the text
+  // wrapped at the cell's width as TextWrapped wraps it), plus a line to spare.
   auto tableHeight = [&](int columns, size_t rows) {
-    float cellWidth =
-        (width - 2.0f * style.WindowPadding.x) / float(columns) - 2.0f * cellPadding.x;
-    std::vector<float> rowLines(rows, 0.0f);
-    for (size_t i = 0; i < lines.size(); ++i) {
-      float textWidth = ImGui::CalcTextSize(lines[i].c_str()).x;
-      float wrapped = std::max(1.0f, std::ceil(textWidth / std::max(cellWidth, 1.0f)));
-      rowLines[i % rows] = std::max(rowLines[i % rows], wrapped);
-    }
-    float total = 0.0f;
-    for (float wrapped : rowLines) total += wrapped * lineHeight;
+    float cellWidth = std::max(
+        (width - 2.0f * style.WindowPadding.x) / float(columns) - 2.0f * cellPadding.x, 1.0f);
+    std::vector<float> rowHeights(rows, 0.0f);
+    for (size_t i = 0; i < lines.size(); ++i)
+      rowHeights[i % rows] = std::max(
+          rowHeights[i % rows], ImGui::CalcTextSize(lines[i].c_str(), nullptr, false, cellWidth).y);
+    float total = ImGui::GetTextLineHeightWithSpacing();
+    for (float height : rowHeights) total += height;
     return total;
   };
   auto rowsFor = [&](int columns) {
@@ -184,7 +182,10 @@ void Overlay::drawHelp(const std::vector<std::string>& lines, int flags, float b
       columns = count;
       break;
     }
-    if (tall < least) least = tall, columns = count;
+    if (tall < least) {
+      least = tall;
+      columns = count;
+    }
   }
   const size_t rows = rowsFor(columns);
   float panelWidth = width;
@@ -243,10 +244,13 @@ void Overlay::record(VkCommandBuffer cmd, uint32_t imageIndex, const OverlayText
     ImGui::End();
   } else {
     // In the status panel's place, so the two never overlap; the message
-    // goes under the keys (the panel starts 8 pixels in, wrapping at messageWrap).
+    // goes under the keys (PushTextWrapPos is window-local: the text wraps
+    // messageWrap less the window's padding from its left edge).
     float below = 0.0f;
     if (!text.message.empty())
-      below = ImGui::CalcTextSize(text.message.c_str(), nullptr, false, messageWrap - 8.0f).y +
+      below = ImGui::CalcTextSize(text.message.c_str(), nullptr, false,
+                                  messageWrap - ImGui::GetStyle().WindowPadding.x)
+                  .y +
               ImGui::GetStyle().ItemSpacing.y;
     drawHelp(text.help, flags, below);
     drawMessage();
