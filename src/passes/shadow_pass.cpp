@@ -26,7 +26,7 @@ struct MaskedShadowDraw {
 // (TEXTURE_ALPHA) where the texel covers less than half. A map holds depth,
 // not how much light passes, so a blended texel either casts or not; the
 // tracer's shadow rays pass 1 - alpha. The factor's alpha is left out, as
-// every transparent caster is drawn whole.
+// the maps leave out every material's transparency (kt).
 constexpr float kBlendCasterCoverage = 0.5f;
 
 bool isMaskedCaster(const DrawItem& draw) {

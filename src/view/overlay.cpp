@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/base/image.h"
 #include "core/vulkan/vk_check.h"
@@ -175,7 +176,7 @@ void Overlay::drawHelp(const std::vector<std::string>& lines, int flags, float b
     return (lines.size() + size_t(columns) - 1) / size_t(columns);
   };
   int columns = 1;
-  float least = tableHeight(1, rowsFor(1));
+  float least = std::numeric_limits<float>::infinity();
   for (int count = 1; count <= 4; ++count) {
     float tall = tableHeight(count, rowsFor(count));
     if (tall <= height) {
