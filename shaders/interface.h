@@ -24,6 +24,12 @@ using mat4 = glm::mat4;
 #define BINDING_ENVIRONMENT 2  // combined image sampler: the environment cube map
 #define BINDING_SHADOW_MAP \
   3  // combined image sampler (compare): the shadow maps, one layer per view
+// Translucent casters (kt > 0: glass, glTF BLEND factors), per layer of the
+// shadow maps: the opaque casters' depth alone and the product of every
+// translucent one's transmittance (passes/shadow_pass.h). Read only by
+// SHADOW_TRANSLUCENT variants.
+#define BINDING_OPAQUE_SHADOW_MAP 5  // combined image sampler (compare)
+#define BINDING_TRANSMITTANCE 6      // combined image sampler: R16F, nearest
 
 // Compute passes that build the environment cube (their own set 0)
 #define BINDING_CUBE_TARGET 0  // storage image2DArray: one mip level of the cube, layer = face
@@ -131,6 +137,8 @@ using mat4 = glm::mat4;
 #define SHADOW_HARD 1
 #define SHADOW_PCF3 2
 #define SHADOW_PCF5 3
+// Or-ed into SPEC_SHADOW_FILTER: the maps have translucent layers to read.
+#define SHADOW_TRANSLUCENT 16
 
 // A light in eye space.
 struct GpuLight {

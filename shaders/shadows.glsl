@@ -20,7 +20,11 @@
 #define SHADOWS_GLSL
 #include "common.glsl"
 
-layout(constant_id = SPEC_SHADOW_FILTER) const int shadowFilter = SHADOW_OFF;
+// SPEC_SHADOW_FILTER: the filter, or-ed with SHADOW_TRANSLUCENT when the
+// maps have translucent layers (passes/shadow_pass.h).
+layout(constant_id = SPEC_SHADOW_FILTER) const int shadowSpecialization = SHADOW_OFF;
+const int shadowFilter = shadowSpecialization & (SHADOW_TRANSLUCENT - 1);
+const bool translucentShadows = (shadowSpecialization & SHADOW_TRANSLUCENT) != 0;
 
 // Phong's shadow coordinates travel from its vertex stage to its fragment
 // stage (SHADOW_COORDINATES) as one vec4 per light slot, locations 12..19,
@@ -90,7 +94,26 @@ vec4 shadowMapCoordinates(int i, vec3 position, vec3 normal) {
 
 #ifdef SHADOW_LOOKUP
 layout(set = 0, binding = BINDING_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
+layout(set = 0, binding = BINDING_OPAQUE_SHADOW_MAP) uniform sampler2DArrayShadow opaqueShadowMap;
+layout(set = 0, binding = BINDING_TRANSMITTANCE) uniform sampler2DArray transmittanceMap;
 const bool shadowsLookedUp = shadowFilter != SHADOW_OFF;
+
+// One tap: the light that reaches the point `uvDepth` of a layer. 1 before
+// the nearest caster, 0 behind it; with translucent casters
+// (SHADOW_TRANSLUCENT) the map holds them too, and a point behind no opaque
+// caster but behind a translucent one gets the product of the
+// transmittances of every translucent caster the texel's ray crosses (also
+// those behind the point: one layer cannot tell them apart).
+float shadowTap(vec3 uvDepth, float layer) {
+  vec4 coordinate = vec4(uvDepth.xy, layer, uvDepth.z);
+  float lit = texture(shadowMap, coordinate);
+  // Lit points (most) look up nothing more: llvmpipe skips a branch no lane takes.
+  if (translucentShadows && lit < 1.0) {
+    lit = texture(opaqueShadowMap, coordinate) *
+          texture(transmittanceMap, vec3(uvDepth.xy, layer)).r;
+  }
+  return lit;
+}
 
 // The per-fragment half: light i's k_shadow from shadowMapCoordinates()'
 // `coordinates`. Written for lavapipe's SIMD lanes: every value that
@@ -135,7 +158,7 @@ float shadowLookup(int i, vec4 coordinates) {
   int radius = shadowFilter == SHADOW_PCF5 ? 2 : (shadowFilter == SHADOW_PCF3 ? 1 : 0);
   float lit;
   if (radius == 0) {
-    lit = texture(shadowMap, vec4(uvDepth.xy, layer, uvDepth.z));
+    lit = shadowTap(uvDepth, layer);
   } else {
     float step = shadows.lights[i].z;  // one texel
     // Receiver-plane depth: a tap `offset` away compares the depth the
@@ -164,7 +187,7 @@ float shadowLookup(int i, vec4 coordinates) {
     for (int y = -radius; y <= radius; ++y)
       for (int x = -radius; x <= radius; ++x) {
         vec2 offset = vec2(x, y) * step;
-        lit += texture(shadowMap, vec4(uvDepth.xy + offset, layer, uvDepth.z + dot(gradient, offset)));
+        lit += shadowTap(vec3(uvDepth.xy + offset, uvDepth.z + dot(gradient, offset)), layer);
       }
     lit /= float((2 * radius + 1) * (2 * radius + 1));
   }

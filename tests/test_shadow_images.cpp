@@ -225,5 +225,144 @@ TEST_F(ShadowImages, ZeroBiasShowsAcneAndLargeBiasPeterPanning) {
   EXPECT_GT(large.peterPanningFraction(), 0.02) << large.peterPanning << " of " << large.contact;
 }
 
+// Shadows through glass: a ball of kt 0.85 and ior 1.5 over a floor, under a
+// directional light and, apart, a point light above it. Each crossing of
+// the ball passes kt (1 - F), so the floor under the ball gets
+// (0.85 (1 - F))^2 of the light: 0.67 under its centre, 0.59 where the
+// light meets it 0.9 of its radius out. The raster floor must agree with the tracer's exact shadow
+// rays within 4 of 255 (sRGB) under the centre and near the rim, for every filter; the code before
+// the translucent layers left the floor in full shadow. And the ball's own lit top, in front of its
+// translucent depth, must stay as lit as when the ball casts nothing (the gate: without it the top
+// would be dimmed by its own transmittance).
+// The green channel (sRGB) of `image` where `camera` sees world point `world`.
+int greenAt(const ImageU8& image, const Camera& camera, glm::vec3 world) {
+  const glm::mat4 toClip =
+      camera.projectionMatrix(float(image.width) / float(image.height)) * camera.viewMatrix();
+  glm::vec4 clip = toClip * glm::vec4(world, 1.0f);
+  glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  auto x = uint32_t((ndc.x * 0.5f + 0.5f) * float(image.width));
+  auto y = uint32_t((ndc.y * 0.5f + 0.5f) * float(image.height));
+  return int(image.pixels[(size_t(y) * image.width + x) * 4 + 1]);
+}
+
+struct GlassCase {
+  const char* name;
+  Light light;
+  friend void PrintTo(const GlassCase& c, std::ostream* os) { *os << c.name; }
+};
+
+class GlassShadow : public GpuTest, public ::testing::WithParamInterface<GlassCase> {};
+
+TEST_P(GlassShadow, FloorGetsWhatTheTracerPassesAndTheLitSideStaysLit) {
+  Scene scene;
+  scene.camera.eye = {0.0f, 5.0f, 6.0f};
+  scene.camera.at = {0.0f, 0.5f, 0.0f};
+  scene.ambient = glm::vec3(0.1f);
+  scene.lights.push_back(GetParam().light);
+  ShapeDesc floorShape{ShapeKind::Plane};
+  floorShape.size = 12.0f;
+  Material floor{glm::vec3(0.1f), glm::vec3(0.8f), glm::vec3(0.0f), 1.0f};
+  scene.objects.push_back({"floor", scene.addShape(floorShape), glm::mat4(1.0f), floor});
+  ShapeDesc ball{ShapeKind::UvSphere};
+  ball.radius = 1.0f;
+  ball.tessellation = 64;
+  Material glass{glm::vec3(0.1f), glm::vec3(0.6f), glm::vec3(0.0f), 1.0f};
+  glass.transparency = 0.85f;
+  glass.ior = 1.5f;
+  scene.objects.push_back({"glass", scene.addShape(ball), translation({0.0f, 1.5f, 0.0f}), glass});
+  const uint32_t width = 320, height = 240;
+  TraceSettings trace;
+  trace.width = width, trace.height = height, trace.samplesPerPixel = 1, trace.shadows = true;
+  const ImageU8 traced = encodeSrgb8(RayTracer(scene).render(trace).image);
+  auto green = [&](const ImageU8& image, glm::vec3 world) {
+    return greenAt(image, scene.camera, world);
+  };
+  // Floor points under the ball (the light's rays through them meet it at
+  // its centre and 0.9 of its radius out), found along the light.
+  const Light& light = scene.lights[0];
+  auto underBall = [&](glm::vec3 throughBall) {
+    glm::vec3 towardsLight = light.type == LightType::Point
+                                 ? glm::normalize(light.position - throughBall)
+                                 : -glm::normalize(light.direction);
+    return throughBall - towardsLight * (throughBall.y / towardsLight.y);
+  };
+  const glm::vec3 centre = underBall({0.0f, 1.5f, 0.0f});
+  const glm::vec3 rim = underBall({0.9f, 1.5f, 0.0f});
+  const int lit = green(traced, {3.0f, 0.0f, 1.0f});
+  const int centreTrace = green(traced, centre), rimTrace = green(traced, rim);
+  // The scene shows what it is for: a shadow, lighter than ambient alone,
+  // darker towards the rim.
+  ASSERT_LT(centreTrace, lit - 20);
+  ASSERT_LT(rimTrace, centreTrace - 3);
+  for (ShadowMethod method : {ShadowMethod::Hard, ShadowMethod::Pcf3, ShadowMethod::Pcf5}) {
+    RenderSettings settings{width, height, ShadingModel::Phong};
+    settings.shadows = method;
+    const ImageU8 raster = render(scene, settings);
+    const char* filter = nameOf(kShadowMethodNames, method).data();
+    std::printf(
+        "%s, %s: floor lit %d; under the centre trace %d raster %d; near the rim trace "
+        "%d raster %d\n",
+        GetParam().name, filter, lit, centreTrace, green(raster, centre), rimTrace,
+        green(raster, rim));
+    EXPECT_NEAR(green(raster, centre), centreTrace, 4) << filter;
+    EXPECT_NEAR(green(raster, rim), rimTrace, 4) << filter;
+    Scene noCaster = scene;
+    noCaster.objects[1].castsShadows = false;
+    const ImageU8 uncast = render(noCaster, settings);
+    const glm::vec3 top =
+        glm::vec3(0.0f, 2.5f, 0.0f) +
+        0.2f * glm::normalize(glm::vec3(scene.camera.eye - glm::vec3(0.0f, 2.5f, 0.0f)));
+    EXPECT_NEAR(green(raster, top), green(uncast, top), 1) << filter << ": the ball's lit top";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Lights, GlassShadow,
+    ::testing::Values(
+        GlassCase{"directional",
+                  {LightType::Directional, {}, {0.1f, -1.0f, 0.05f}, glm::vec3(0.9f)}},
+        GlassCase{"point", {LightType::Point, {0.3f, 7.0f, 0.2f}, {}, glm::vec3(0.9f)}}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+// glTF BLEND without a texture (coverage, kt = 1 - the factor's alpha): the
+// shadow maps pass 1 - alpha per surface, as the tracer's shadow rays do,
+// with no Fresnel term. A card of alpha 0.4 (transparency 0.6) over a floor:
+// the floor under it gets 0.6 of the light in both renderers (within 3 of
+// 255); the code before the translucent layers cast a full shadow there.
+TEST_F(ShadowImages, BlendedFactorCardPassesOneMinusItsAlpha) {
+  Scene scene;
+  scene.camera.eye = {0.0f, 4.0f, 5.0f};
+  scene.camera.at = {0.0f, 0.0f, 0.0f};
+  scene.ambient = glm::vec3(0.1f);
+  scene.lights.push_back({LightType::Directional, {}, {0.05f, -1.0f, 0.03f}, glm::vec3(0.9f)});
+  ShapeDesc floorShape{ShapeKind::Plane};
+  floorShape.size = 12.0f;
+  Material floor{glm::vec3(0.1f), glm::vec3(0.8f), glm::vec3(0.0f), 1.0f};
+  scene.objects.push_back({"floor", scene.addShape(floorShape), glm::mat4(1.0f), floor});
+  ShapeDesc cardShape{ShapeKind::Plane};
+  cardShape.size = 2.0f;
+  Material card{glm::vec3(0.1f), glm::vec3(0.5f), glm::vec3(0.0f), 1.0f};
+  card.alphaCoverage = true;
+  card.transparency = 0.6f;  // 1 - the factor's alpha
+  card.doubleSided = true;
+  scene.objects.push_back(
+      {"card", scene.addShape(cardShape), translation({-2.0f, 1.0f, 0.0f}), card});
+  const uint32_t width = 320, height = 240;
+  TraceSettings trace;
+  trace.width = width, trace.height = height, trace.samplesPerPixel = 1, trace.shadows = true;
+  const ImageU8 traced = encodeSrgb8(RayTracer(scene).render(trace).image);
+  RenderSettings settings{width, height, ShadingModel::Phong};
+  settings.shadows = kDefaultShadowMethod;
+  const ImageU8 raster = render(scene, settings);
+  const glm::vec3 under(-2.0f - 0.05f, 0.0f, -0.03f), open(1.0f, 0.0f, 1.0f);
+  const int lit = greenAt(traced, scene.camera, open);
+  const int expected = greenAt(traced, scene.camera, under);
+  const int got = greenAt(raster, scene.camera, under);
+  std::printf("floor lit %d (raster %d); under the card trace %d, raster %d\n", lit,
+              greenAt(raster, scene.camera, open), expected, got);
+  ASSERT_LT(expected, lit - 20);  // the card casts a shadow, lighter than ambient alone
+  EXPECT_NEAR(got, expected, 3);
+}
+
 }  // namespace
 }  // namespace shadelab::test

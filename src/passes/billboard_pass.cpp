@@ -101,6 +101,7 @@ BillboardPass::Variant BillboardPass::variantOf(ShadingModel model, const Forwar
           scene.lights,
           frame.target,
           frame.shadows,
+          frame.translucentShadows,
           billboard.blended,
           maps,
           int(billboard.constants.optics.x),
@@ -126,7 +127,7 @@ Pipeline BillboardPass::createPipeline(const Variant& key) const {
     int32_t kind;
     LightSpecialization lights;
   } constants{int32_t(key.model),
-              int32_t(key.shadows),
+              shadowSpecialization(key.shadows, key.translucentShadows),
               key.blended ? VK_FALSE : VK_TRUE,
               int32_t(key.textureMaps),
               key.kind,

@@ -114,6 +114,7 @@ class BillboardPass {
     LightLayout lights;
     TargetLayout target;
     ShadowMethod shadows;
+    bool translucentShadows;  // SHADOW_TRANSLUCENT in SPEC_SHADOW_FILTER
     bool blended;
     uint32_t textureMaps;  // SPEC_TEXTURE_MAPS
     int kind;              // SPEC_BILLBOARD_KIND

@@ -30,6 +30,10 @@ ForwardPass::ForwardPass(const Context& context, VkFormat colorFormat, const Lig
        VK_SHADER_STAGE_FRAGMENT_BIT},
       {BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT},
+      {BINDING_OPAQUE_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT},
+      {BINDING_TRANSMITTANCE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT},
       {BINDING_SHADOWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
   };
@@ -168,6 +172,7 @@ ForwardVariant ForwardPass::variantOf(ShadingModel model, const ForwardFrame& fr
                          .environment = frame.environment,
                          .refracts = frame.environment && draw.constants.optics.y > 0.0f,
                          .shadows = frame.shadows,
+                         .translucentShadows = frame.translucentShadows,
                          .masked = draw.masked,
                          .doubleSided = draw.doubleSided};
   if (draw.textured)
@@ -194,7 +199,7 @@ void ForwardPass::prepare(const GpuScene& scene, std::span<const ShadingModel> m
 
 Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
   const auto& [model, lights, target, textured, blended, wireframe, environment, refracts, shadows,
-               masked, doubleSided, textureMaps, material, lightSet] = key;
+               translucentShadows, masked, doubleSided, textureMaps, material, lightSet] = key;
   struct {
     int32_t shadingModel;
     VkBool32 environment;
@@ -208,7 +213,7 @@ Pipeline ForwardPass::createPipeline(const ForwardVariant& key) const {
     LightSpecialization lights;
   } constants{int32_t(model),
               environment ? VK_TRUE : VK_FALSE,
-              int32_t(shadows),
+              shadowSpecialization(shadows, translucentShadows),
               masked ? VK_TRUE : VK_FALSE,
               doubleSided ? VK_TRUE : VK_FALSE,
               material ? VK_TRUE : VK_FALSE,

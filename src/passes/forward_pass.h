@@ -51,10 +51,11 @@ struct ForwardVariant {
   bool environment = false;  // SPEC_ENVIRONMENT: reflection and refraction of the cube
   bool refracts = false;     // SPEC_ENVIRONMENT_REFRACTS: with the environment, kt > 0
   ShadowMethod shadows =
-      ShadowMethod::Off;     // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
-  bool masked = false;       // SPEC_ALPHA_MASK: glTF alphaMode MASK
-  bool doubleSided = false;  // SPEC_DOUBLE_SIDED, no culling: glTF doubleSided
-  uint32_t textureMaps = 0;  // SPEC_TEXTURE_MAPS (textured only): appliedTextureMaps
+      ShadowMethod::Off;            // SPEC_SHADOW_FILTER; flat and Gouraud: SHADOW_VARYINGS
+  bool translucentShadows = false;  // SHADOW_TRANSLUCENT in SPEC_SHADOW_FILTER
+  bool masked = false;              // SPEC_ALPHA_MASK: glTF alphaMode MASK
+  bool doubleSided = false;         // SPEC_DOUBLE_SIDED, no culling: glTF doubleSided
+  uint32_t textureMaps = 0;         // SPEC_TEXTURE_MAPS (textured only): appliedTextureMaps
   // SPEC_MATERIAL_CONSTANTS: the draw's ka, kd, ks, n and emission compiled
   // in (SPEC_MATERIAL_EMISSIVE) instead of read from its push constants; empty: read.
   std::optional<MaterialBits> material;
@@ -76,6 +77,7 @@ struct ForwardFrame {
   std::span<const VkDescriptorSet> materialSets;
   bool environment = false;                  // the variants with the environment term
   ShadowMethod shadows = ShadowMethod::Off;  // the variants that look the shadow maps up
+  bool translucentShadows = false;  // the maps have translucent layers (ShadowPass::translucent)
   // Applied to the textured draws' TEXTURE_* flags (appliedTextureMaps).
   bool bump = true;      // false: normal and height maps ignored
   bool mipTint = false;  // diffuse texels tinted by mip level

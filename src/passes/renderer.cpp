@@ -48,7 +48,7 @@ Renderer::Renderer(const Context& context)
       placeholderEnvironment_(environmentBuilder_.placeholder()) {
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kFramesInFlight},
                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFramesInFlight},
-                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2 * kFramesInFlight}};
+                                  {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4 * kFramesInFlight}};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = kFramesInFlight;
   poolInfo.poolSizeCount = uint32_t(std::size(sizes));
@@ -118,6 +118,9 @@ void Renderer::writeSampledImage(const Frame& frame, uint32_t binding, VkSampler
 
 void Renderer::writeShadowMapDescriptor(const Frame& frame) const {
   writeSampledImage(frame, BINDING_SHADOW_MAP, shadow_.sampler(), shadow_.view());
+  writeSampledImage(frame, BINDING_OPAQUE_SHADOW_MAP, shadow_.sampler(), shadow_.opaqueDepthView());
+  writeSampledImage(frame, BINDING_TRANSMITTANCE, shadow_.transmittanceSampler(),
+                    shadow_.transmittanceView());
 }
 
 void Renderer::writeEnvironmentDescriptor(const Frame& frame) const {
@@ -322,7 +325,7 @@ void Renderer::applyFrameSettings(const GpuScene& scene, const FrameSettings& se
   if (scene.anyTextured || billboards) textures_.prepareFilter(settings.textures.filterOverride);
   ForwardFrame forward = forwardFrame(scene, settings);
   if (forward.shadows != ShadowMethod::Off) {
-    if (shadow_.prepare(scene.shadowLayers, settings.shadowMapSize)) {
+    if (shadow_.prepare(scene.shadowLayers, settings.shadowMapSize, forward.translucentShadows)) {
       context_.waitIdle();  // no frame in flight may hold the descriptors being re-pointed
       for (const Frame& frame : frames_) writeShadowMapDescriptor(frame);
     }
@@ -375,6 +378,7 @@ ForwardFrame Renderer::forwardFrame(const GpuScene& scene, const FrameSettings& 
   return {.target = {settings.msaaSamples, settings.depth},
           .environment = settings.environment && sceneEnvironment_,
           .shadows = shadowed ? settings.shadows : ShadowMethod::Off,
+          .translucentShadows = shadowed && ShadowPass::anyTranslucentCaster(scene.draws),
           .bump = settings.textures.bump,
           .mipTint = settings.textures.mipTint,
           .materialConstants = settings.materialConstants &&
@@ -587,7 +591,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, Frame& frame, const GpuScene& 
   }
   stats.shadowDraws =
       shadow_.record(cmd, scene, casters, uploadCount_, transforms, shadows.worldToLightClip,
-                     textures_.materialSets(settings_.textures.filterOverride),
+                     shadows.layerLights, textures_.materialSets(settings_.textures.filterOverride),
                      settings_.keepShadowMaps, settings_.shadowDepthClamp);
 }
 

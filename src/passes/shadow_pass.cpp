@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cassert>
+#include <cmath>
 #include <cstring>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -23,10 +24,11 @@ struct MaskedShadowDraw {
 
 // A caster whose base colour texture's alpha cuts holes in its shadow:
 // alphaMode MASK below its cut-off, and BLEND over a texture with alpha
-// (TEXTURE_ALPHA) where the texel covers less than half. A map holds depth,
-// not how much light passes, so a blended texel either casts or not; the
-// tracer's shadow rays pass 1 - alpha. The factor's alpha is left out, as
-// the maps leave out every material's transparency (kt).
+// (TEXTURE_ALPHA) where the texel covers less than half. The depth array
+// holds depth, not how much light passes, so a blended texel either casts
+// or not; the tracer's shadow rays pass 1 - alpha. The factor's alpha (the
+// material's kt) is left out here: only casters without such a texture go
+// through the translucent layers (ShadowPass::isTranslucentCaster).
 constexpr float kBlendCasterCoverage = 0.5f;
 
 bool isMaskedCaster(const DrawItem& draw) {
@@ -38,7 +40,44 @@ bool isMaskedCaster(const DrawItem& draw) {
 float casterAlphaThreshold(const DrawItem& draw) {
   return draw.masked ? draw.constants.ka.w : kBlendCasterCoverage;
 }
+
+// shadow_translucent.*'s push constants.
+struct TranslucentShadowDraw {
+  glm::mat4 objectToLightClip;
+  // Object space to the light's frame (affine); its last row carries
+  // (kt, ior, 1: Fresnel, 1: point light).
+  glm::mat4 objectToLight;
+};
+static_assert(sizeof(TranslucentShadowDraw) <= 128,
+              "Vulkan guarantees 128 bytes of push constants");
+
+// World space to a light's frame: the point light at the origin, or the
+// directional light shining along -z (`towardsLight` becomes +z).
+glm::mat4 worldToLightFrame(const glm::vec4& light) {
+  if (light.w != 0.0f)
+    return glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0),
+                     glm::vec4(-glm::vec3(light), 1));
+  glm::vec3 z = glm::normalize(glm::vec3(light));
+  glm::vec3 helper = std::abs(z.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  glm::vec3 x = glm::normalize(glm::cross(helper, z));
+  glm::vec3 y = glm::cross(z, x);
+  // Rows x, y, z: a rotation taking z to (0, 0, 1).
+  return glm::mat4(glm::vec4(x.x, y.x, z.x, 0), glm::vec4(x.y, y.y, z.y, 0),
+                   glm::vec4(x.z, y.z, z.z, 0), glm::vec4(0, 0, 0, 1));
+}
 }  // namespace
+
+bool ShadowPass::isTranslucentCaster(const DrawItem& draw) {
+  // kd.w = 1 - kt. A texture that cuts holes keeps the caster in the depth
+  // array (isMaskedCaster), whatever its kt.
+  return draw.castsShadows && !draw.hidden && draw.constants.kd.w < 1.0f && !isMaskedCaster(draw);
+}
+
+bool ShadowPass::anyTranslucentCaster(std::span<const DrawItem> draws) {
+  for (const DrawItem& draw : draws)
+    if (isTranslucentCaster(draw)) return true;
+  return false;
+}
 
 ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLayout)
     : context_(context) {
@@ -68,6 +107,16 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
   pipelines_[0][1] = createDepthPipeline(false, true);
   pipelines_[1][1] = createDepthPipeline(true, true);
 
+  // Translucent casters (isTranslucentCaster): position and normal, the light's frame.
+  VkPushConstantRange translucentPush{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(TranslucentShadowDraw)};
+  VkPipelineLayoutCreateInfo translucentLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  translucentLayoutInfo.pushConstantRangeCount = 1;
+  translucentLayoutInfo.pPushConstantRanges = &translucentPush;
+  VK_CHECK(vkCreatePipelineLayout(device, &translucentLayoutInfo, nullptr, &layout));
+  translucentLayout_ = PipelineLayout(device, layout);
+  translucentVertex_ = loadShader(device, "shadow_translucent.vert");
+  translucentFragment_ = loadShader(device, "shadow_translucent.frag");
+
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   // One tap per texture() call: the filters are taps in the shader (PCF).
   samplerInfo.magFilter = VK_FILTER_NEAREST;
@@ -83,14 +132,33 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
   VK_CHECK(vkCreateSampler(device, &samplerInfo, nullptr, &sampler));
   sampler_ = Sampler(device, sampler);
 
+  // The transmittance: one texel per tap, as the depth's.
+  samplerInfo.compareEnable = VK_FALSE;
+  samplerInfo.compareOp = VK_COMPARE_OP_ALWAYS;
+  VK_CHECK(vkCreateSampler(device, &samplerInfo, nullptr, &sampler));
+  transmittanceSampler_ = Sampler(device, sampler);
+
   ImageDesc desc{kDepthFormat, 1, 1};
   desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   desc.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
   desc.arrayView = true;
   placeholder_ = Image(context, desc);
+  ImageDesc transmittanceDesc{kTransmittanceFormat, 1, 1};
+  transmittanceDesc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  transmittanceDesc.arrayView = true;
+  transmittancePlaceholder_ = Image(context, transmittanceDesc);
   context.submitAndWait([&](VkCommandBuffer cmd) {
     imageBarrier(cmd, placeholder_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::Undefined,
                  ImageUse::ShaderRead);
+    // Defined contents, though only variants that read real layers sample it.
+    imageBarrier(cmd, transmittancePlaceholder_.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+                 ImageUse::Undefined, ImageUse::TransferDest);
+    VkClearColorValue one{{1.0f, 1.0f, 1.0f, 1.0f}};
+    VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, transmittancePlaceholder_.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         &one, 1, &range);
+    imageBarrier(cmd, transmittancePlaceholder_.get(), VK_IMAGE_ASPECT_COLOR_BIT,
+                 ImageUse::TransferDest, ImageUse::ShaderRead);
   });
 }
 
@@ -148,6 +216,62 @@ Pipeline ShadowPass::createDepthPipeline(bool masked, bool depthClamp) const {
 VkPipeline ShadowPass::pipeline(bool masked, bool depthClamp) {
   Pipeline& slot = pipelines_[masked ? 1 : 0][depthClamp ? 1 : 0];
   if (!slot) slot = createDepthPipeline(masked, depthClamp);
+  return slot;
+}
+
+Pipeline ShadowPass::createTranslucentPipeline(bool depthClamp) const {
+  VkPipelineShaderStageCreateInfo stages[2] = {
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = translucentVertex_;
+  stages[0].pName = "main";
+  stages[1] = stages[0];
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = translucentFragment_;
+  VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  VkVertexInputAttributeDescription attributes[] = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)}};
+  VkPipelineVertexInputStateCreateInfo vertexInput{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  vertexInput.vertexBindingDescriptionCount = 1;
+  vertexInput.pVertexBindingDescriptions = &binding;
+  vertexInput.vertexAttributeDescriptionCount = 2;
+  vertexInput.pVertexAttributeDescriptions = attributes;
+  VkPipelineRasterizationStateCreateInfo raster{
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  // Both faces: a closed surface passes light twice (in and out), as the
+  // tracer's shadow rays count its crossings.
+  raster.cullMode = VK_CULL_MODE_NONE;
+  raster.lineWidth = 1.0f;
+  // The same fragments as the depth pass covers (pancaking, as there).
+  raster.depthClampEnable = depthClamp && context_.features().depthClamp;
+  VkPipelineMultisampleStateCreateInfo multisample{
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{
+      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  // Every crossing counts, in any order: no depth test.
+  GraphicsPipelineDesc desc{{stages, 2u}, &vertexInput, &raster, &multisample, &depth};
+  // dst = dst * src: the product of every crossing's transmittance.
+  desc.blend.blendEnable = VK_TRUE;
+  desc.blend.srcColorBlendFactor = VK_BLEND_FACTOR_ZERO;
+  desc.blend.dstColorBlendFactor = VK_BLEND_FACTOR_SRC_COLOR;
+  desc.blend.colorBlendOp = VK_BLEND_OP_ADD;
+  desc.blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+  desc.blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  desc.blend.alphaBlendOp = VK_BLEND_OP_ADD;
+  desc.blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT;
+  desc.colorFormat = kTransmittanceFormat;
+  desc.layout = translucentLayout_;
+  return createGraphicsPipeline(context_.device(), desc);
+}
+
+VkPipeline ShadowPass::translucentPipeline(bool depthClamp) {
+  Pipeline& slot = translucentPipelines_[depthClamp ? 1 : 0];
+  if (!slot) slot = createTranslucentPipeline(depthClamp);
   return slot;
 }
 
@@ -222,34 +346,69 @@ void ShadowPass::warmUp(bool depthClamp) {
   warmPending_ = true;
 }
 
-bool ShadowPass::prepare(uint32_t layers, uint32_t size) {
+std::vector<ImageView> ShadowPass::makeLayerViews(const Image& image, VkFormat format,
+                                                  VkImageAspectFlags aspect) const {
+  std::vector<ImageView> views;
+  for (uint32_t layer = 0; layer < image.desc().layers; ++layer) {
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = image.get();
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = format;
+    info.subresourceRange = {aspect, 0, 1, layer, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(context_.device(), &info, nullptr, &view));
+    views.emplace_back(context_.device(), view);
+  }
+  return views;
+}
+
+bool ShadowPass::prepare(uint32_t layers, uint32_t size, bool translucent) {
   layers = std::max(layers, 1u);
-  if (map_ && map_.desc().layers == layers && map_.desc().width == size) return false;
+  if (map_ && map_.desc().layers == layers && map_.desc().width == size &&
+      this->translucent() == translucent)
+    return false;
   if (map_) context_.waitIdle();  // frames in flight read the old map
   waitForWarmUp();
   warmed_ = false;
-  layerViews_.clear();
   drawnFrom_.assign(layers, {});
+  layerViews_.clear();
+  opaqueDepthViews_.clear();
+  transmittanceViews_.clear();
   map_ = Image{};
+  opaqueDepth_ = Image{};
+  transmittance_ = Image{};
   ImageDesc desc{kDepthFormat, size, size};
   desc.layers = layers;
   desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
   desc.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
   desc.arrayView = true;
+  // With translucent casters each layer starts as a copy of the opaque ones' depth.
+  ImageDesc opaqueDesc = desc;
+  if (translucent) {
+    desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    opaqueDesc.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  }
   map_ = Image(context_, desc);
-  for (uint32_t layer = 0; layer < layers; ++layer) {
-    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    info.image = map_.get();
-    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    info.format = kDepthFormat;
-    info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, layer, 1};
-    VkImageView view = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateImageView(context_.device(), &info, nullptr, &view));
-    layerViews_.emplace_back(context_.device(), view);
+  layerViews_ = makeLayerViews(map_, kDepthFormat, VK_IMAGE_ASPECT_DEPTH_BIT);
+  if (translucent) {
+    opaqueDepth_ = Image(context_, opaqueDesc);
+    opaqueDepthViews_ = makeLayerViews(opaqueDepth_, kDepthFormat, VK_IMAGE_ASPECT_DEPTH_BIT);
+    ImageDesc colour{kTransmittanceFormat, size, size};
+    colour.layers = layers;
+    colour.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    colour.arrayView = true;
+    transmittance_ = Image(context_, colour);
+    transmittanceViews_ =
+        makeLayerViews(transmittance_, kTransmittanceFormat, VK_IMAGE_ASPECT_COLOR_BIT);
   }
   // Every layer in ShaderRead, as record() leaves them, even those never drawn.
   context_.submitAndWait([&](VkCommandBuffer cmd) {
     imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::Undefined,
+                 ImageUse::ShaderRead);
+    if (!translucent) return;
+    imageBarrier(cmd, opaqueDepth_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::Undefined,
+                 ImageUse::ShaderRead);
+    imageBarrier(cmd, transmittance_.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::Undefined,
                  ImageUse::ShaderRead);
   });
   return true;
@@ -261,8 +420,12 @@ bool ShadowPass::release() {
   waitForWarmUp();
   warmed_ = false;
   layerViews_.clear();
+  opaqueDepthViews_.clear();
+  transmittanceViews_.clear();
   drawnFrom_.clear();
   map_ = Image{};
+  opaqueDepth_ = Image{};
+  transmittance_ = Image{};
   return true;
 }
 
@@ -270,9 +433,11 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
                             std::span<const DrawItem> draws, uint32_t sceneUpload,
                             std::span<const glm::mat4> objectTransforms,
                             std::span<const glm::mat4> worldToLightClip,
+                            std::span<const glm::vec4> layerLights,
                             std::span<const VkDescriptorSet> materialSets, bool keep,
                             bool depthClamp) {
   assert(map_ && worldToLightClip.size() <= layerViews_.size());
+  assert(layerLights.size() == worldToLightClip.size());
   if (sceneUpload != drawnUpload_) {
     drawnFrom_.assign(drawnFrom_.size(), {});
     drawnUpload_ = sceneUpload;
@@ -320,11 +485,20 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
   // The layers not drawn keep their depth: ShaderRead, not Undefined, before.
   imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::ShaderRead,
                ImageUse::DepthAttachment);
+  if (translucent()) {
+    imageBarrier(cmd, opaqueDepth_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::ShaderRead,
+                 ImageUse::DepthAttachment);
+    imageBarrier(cmd, transmittance_.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::ShaderRead,
+                 ImageUse::ColorAttachment);
+  }
   uint32_t drawn = 0;
+  std::vector<const DrawItem*> translucentCasters;
   for (size_t layer : toDraw) {
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};  // unused slot
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = layerViews_[layer];
+    // With translucent casters the opaque ones go to their own array first
+    // (recordTranslucent adds the translucent ones to a copy).
+    depth.imageView = translucent() ? opaqueDepthViews_[layer] : layerViews_[layer];
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -346,8 +520,15 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
     bool maskedBound = false;
+    translucentCasters.clear();
     for (const DrawItem* caster : casters[layer]) {
       const DrawItem& draw = *caster;
+      // Without the translucent layers (a scene without such casters has
+      // none) every caster is opaque here.
+      if (translucent() && isTranslucentCaster(draw)) {
+        translucentCasters.push_back(caster);
+        continue;
+      }
       glm::mat4 objectToClip =
           worldToLightClip[layer] * objectTransforms[size_t(draw.constants.object.x)];
       bool masked = isMaskedCaster(draw);
@@ -376,10 +557,105 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
       ++drawn;
     }
     vkCmdEndRendering(cmd);
+    if (translucent()) {
+      recordTranslucent(cmd, scene, translucentCasters, layer, worldToLightClip[layer],
+                        layerLights[layer], objectTransforms, depthClamp);
+      drawn += uint32_t(translucentCasters.size());
+    }
   }
   imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::DepthAttachment,
                ImageUse::ShaderRead);
+  if (translucent()) {
+    imageBarrier(cmd, opaqueDepth_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::DepthAttachment,
+                 ImageUse::ShaderRead);
+    imageBarrier(cmd, transmittance_.get(), VK_IMAGE_ASPECT_COLOR_BIT, ImageUse::ColorAttachment,
+                 ImageUse::ShaderRead);
+  }
   return drawn;
+}
+
+void ShadowPass::recordTranslucent(VkCommandBuffer cmd, const GpuScene& scene,
+                                   std::span<const DrawItem* const> casters, size_t layer,
+                                   const glm::mat4& worldToLightClip, const glm::vec4& light,
+                                   std::span<const glm::mat4> objectTransforms, bool depthClamp) {
+  uint32_t size = map_.desc().width;
+  VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+  VkRect2D scissor{{0, 0}, {size, size}};
+  VkDeviceSize offset = 0;
+  VkBuffer vertexBuffer = scene.vertices.get();
+  // The depth array's layer: the opaque casters' depth, then the
+  // translucent ones drawn over it, so it holds the nearest of all (what
+  // the lookup tests first).
+  imageBarrier(cmd, opaqueDepth_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::DepthAttachment,
+               ImageUse::TransferSource);
+  imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::DepthAttachment,
+               ImageUse::TransferDest);
+  VkImageCopy copy{};
+  copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, uint32_t(layer), 1};
+  copy.dstSubresource = copy.srcSubresource;
+  copy.extent = {size, size, 1};
+  vkCmdCopyImage(cmd, opaqueDepth_.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, map_.get(),
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+  imageBarrier(cmd, map_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::TransferDest,
+               ImageUse::DepthAttachment);
+  imageBarrier(cmd, opaqueDepth_.get(), VK_IMAGE_ASPECT_DEPTH_BIT, ImageUse::TransferSource,
+               ImageUse::DepthAttachment);
+  VkRenderingAttachmentInfo none{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};  // unused slot
+  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  depth.imageView = layerViews_[layer];
+  depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  rendering.renderArea = {{0, 0}, {size, size}};
+  rendering.layerCount = 1;
+  rendering.colorAttachmentCount = 1;
+  rendering.pColorAttachments = &none;
+  rendering.pDepthAttachment = &depth;
+  vkCmdBeginRendering(cmd, &rendering);
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline(false, depthClamp));
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+  vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+  for (const DrawItem* draw : casters) {
+    glm::mat4 objectToClip = worldToLightClip * objectTransforms[size_t(draw->constants.object.x)];
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(objectToClip),
+                       &objectToClip);
+    vkCmdDrawIndexed(cmd, draw->indexCount, 1, draw->firstIndex, draw->vertexOffset, 0);
+  }
+  vkCmdEndRendering(cmd);
+
+  // Scope 2: what every crossing passes, multiplied together (1: nothing crossed).
+  VkRenderingAttachmentInfo colour{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  colour.imageView = transmittanceViews_[layer];
+  colour.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  colour.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  colour.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  colour.clearValue.color = {{1.0f, 1.0f, 1.0f, 1.0f}};
+  rendering.pColorAttachments = &colour;
+  rendering.pDepthAttachment = nullptr;
+  vkCmdBeginRendering(cmd, &rendering);
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, translucentPipeline(depthClamp));
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+  vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+  glm::mat4 worldToLight = worldToLightFrame(light);
+  for (const DrawItem* draw : casters) {
+    const glm::mat4& objectToWorld = objectTransforms[size_t(draw->constants.object.x)];
+    TranslucentShadowDraw push{worldToLightClip * objectToWorld, worldToLight * objectToWorld};
+    const gpu::DrawConstants& constants = draw->constants;
+    // The affine map's free last row: kt, ior, Fresnel (not for coverage
+    // materials, whose optics.y is 0), point light.
+    float kt = 1.0f - constants.kd.w;
+    glm::vec4 packed(kt, constants.optics.z, constants.optics.y > 0.0f ? 1.0f : 0.0f,
+                     light.w != 0.0f ? 1.0f : 0.0f);
+    for (int column = 0; column < 4; ++column) push.objectToLight[column][3] = packed[column];
+    vkCmdPushConstants(cmd, translucentLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(push), &push);
+    vkCmdDrawIndexed(cmd, draw->indexCount, 1, draw->firstIndex, draw->vertexOffset, 0);
+  }
+  vkCmdEndRendering(cmd);
 }
 
 }  // namespace shadelab

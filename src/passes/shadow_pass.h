@@ -8,8 +8,21 @@
 // material's set (ForwardPass's material layout) and cut the same holes; so
 // do BLEND ones over a texture with alpha, where a texel covers less than
 // half (shadow_pass.cpp).
-// Writes: its depth array, left in ShaderRead use for the forward pass
-// (BINDING_SHADOW_MAP, a compare sampler).
+// Translucent casters (kt > 0 and no texture cutting holes: glass, glTF
+// BLEND factors) pass some light. When a scene has any (prepare's
+// `translucent`), each layer also gets the opaque casters' depth alone (a
+// second depth array) and the product of what each crossing of a
+// translucent one passes (an R16F array, multiplied into: kt (1 - F),
+// Schlick's F at the light's angle to the surface, or kt alone for coverage
+// materials). The lookup (shaders/shadows.glsl, SHADOW_TRANSLUCENT) reads
+// them only where the depth array, which holds every caster, says shadow:
+// behind no opaque caster, the point gets the transmittance. One layer
+// cannot tell the crossings before a point from those after it: a point
+// between two translucent surfaces (the far side of a glass sphere) gets
+// them all.
+// Writes: its depth array (and the translucent arrays), left in ShaderRead
+// use for the forward pass (BINDING_SHADOW_MAP and BINDING_OPAQUE_SHADOW_MAP,
+// compare samplers; BINDING_TRANSMITTANCE).
 // Keeps: a layer whose view and casters (their transforms, after culling)
 // are exactly those it was last drawn with is not drawn again: a static
 // light over static casters costs its map once, however many frames follow
@@ -28,13 +41,20 @@ namespace shadelab {
 class ShadowPass {
  public:
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+  static constexpr VkFormat kTransmittanceFormat = VK_FORMAT_R16_SFLOAT;
+
+  // A caster drawn into the translucent layers instead of the depth array.
+  static bool isTranslucentCaster(const DrawItem& draw);
+  // Whether any of `draws` is one.
+  static bool anyTranslucentCaster(std::span<const DrawItem> draws);
 
   // `materialLayout`: the textured draws' set (ForwardPass::materialSetLayout).
   ShadowPass(const Context& context, VkDescriptorSetLayout materialLayout);
-  // A depth array of `layers` layers of size x size texels, kept while both
-  // stay the same; returns true when the image changed (re-point the
-  // descriptors that read it). Waits for the device before replacing it.
-  bool prepare(uint32_t layers, uint32_t size);
+  // A depth array of `layers` layers of size x size texels, with the
+  // translucent arrays if `translucent`, kept while all three stay the
+  // same; returns true when the images changed (re-point the descriptors
+  // that read them). Waits for the device before replacing them.
+  bool prepare(uint32_t layers, uint32_t size, bool translucent);
   // Frees the map (frames without shadows need none; view() is then the
   // placeholder's); returns true when there was one. Waits for the device.
   bool release();
@@ -49,7 +69,10 @@ class ShadowPass {
   // nothing a frame reads: every frame clears the layers it draws.
   void warmUp(bool depthClamp);
   // Depth of every caster of `scene` into each layer, seen through
-  // `worldToLightClip[layer]`; `casters` are scene.draws as this frame draws
+  // `worldToLightClip[layer]`, whose light is `layerLights[layer]` (world
+  // space: a point light's position with w = 1, or the unit direction
+  // towards a directional light with w = 0; for the translucent layers'
+  // Fresnel term); `casters` are scene.draws as this frame draws
   // them (--lod may have swapped in coarser index ranges, so a surface
   // shadows itself exactly where it is drawn); `objectTransforms` are the
   // scene objects' model matrices; `materialSets` the textured draws' sets by
@@ -62,27 +85,55 @@ class ShadowPass {
   uint32_t record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const DrawItem> casters,
                   uint32_t sceneUpload, std::span<const glm::mat4> objectTransforms,
                   std::span<const glm::mat4> worldToLightClip,
+                  std::span<const glm::vec4> layerLights,
                   std::span<const VkDescriptorSet> materialSets, bool keep, bool depthClamp = true);
 
   // The array (or a 1x1 placeholder before prepare) and its compare sampler.
   VkImageView view() const { return map_ ? map_.view() : placeholder_.view(); }
   VkSampler sampler() const { return sampler_.get(); }
   uint32_t size() const { return map_ ? map_.desc().width : 1; }
+  // The translucent layers (placeholders without them): the opaque casters'
+  // depth (sampler()) and the transmittance (transmittanceSampler()).
+  bool translucent() const { return bool(opaqueDepth_); }
+  VkImageView opaqueDepthView() const {
+    return opaqueDepth_ ? opaqueDepth_.view() : placeholder_.view();
+  }
+  VkImageView transmittanceView() const {
+    return transmittance_ ? transmittance_.view() : transmittancePlaceholder_.view();
+  }
+  VkSampler transmittanceSampler() const { return transmittanceSampler_.get(); }
 
  private:
   Pipeline createDepthPipeline(bool masked, bool depthClamp) const;
   VkPipeline pipeline(bool masked, bool depthClamp);  // created on first use
+  Pipeline createTranslucentPipeline(bool depthClamp) const;
+  VkPipeline translucentPipeline(bool depthClamp);  // created on first use
+  // One layer's translucent casters: their depth over a copy of the opaque
+  // casters' (into the depth array), then their transmittance.
+  void recordTranslucent(VkCommandBuffer cmd, const GpuScene& scene,
+                         std::span<const DrawItem* const> casters, size_t layer,
+                         const glm::mat4& worldToLightClip, const glm::vec4& light,
+                         std::span<const glm::mat4> objectTransforms, bool depthClamp);
+  std::vector<ImageView> makeLayerViews(const Image& image, VkFormat format,
+                                        VkImageAspectFlags aspect) const;
 
   const Context& context_;
   PipelineLayout layout_;
   ShaderModule vertex_;
   PipelineLayout maskedLayout_;  // set 0: a material's textures; push: ShadowDraw with its uv
   ShaderModule maskedVertex_, maskedFragment_;
-  Pipeline pipelines_[2][2];  // [masked][depth clamp]
+  Pipeline pipelines_[2][2];          // [masked][depth clamp]
+  PipelineLayout translucentLayout_;  // push: TranslucentShadowDraw
+  ShaderModule translucentVertex_, translucentFragment_;
+  Pipeline translucentPipelines_[2];  // [depth clamp]
   Sampler sampler_;
+  Sampler transmittanceSampler_;
   Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
+  Image transmittancePlaceholder_;
   Image map_;
   std::vector<ImageView> layerViews_;  // one per layer: the attachment of its pass
+  Image opaqueDepth_, transmittance_;  // with translucent casters only
+  std::vector<ImageView> opaqueDepthViews_, transmittanceViews_;
   // warmUp's submission, kept until its fence signals.
   void waitForWarmUp();
   CommandBufferPool warmCommands_;

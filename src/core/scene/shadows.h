@@ -27,6 +27,12 @@ inline constexpr NameTable<ShadowMethod, 4> kShadowMethodNames = {{{ShadowMethod
                                                                    {ShadowMethod::Pcf3, "pcf3"},
                                                                    {ShadowMethod::Pcf5, "pcf5"}}};
 
+// SPEC_SHADOW_FILTER's value: the filter, with SHADOW_TRANSLUCENT when the
+// maps have translucent layers to read (passes/shadow_pass.h).
+inline int32_t shadowSpecialization(ShadowMethod method, bool translucent) {
+  return int32_t(method) | (translucent && method != ShadowMethod::Off ? SHADOW_TRANSLUCENT : 0);
+}
+
 // Bias against self-shadowing ("acne"), all in shadow-map texels (the world
 // size of one texel where the point is), so one setting suits every map size
 // and scene scale. The receiver is moved before the lookup by

@@ -482,6 +482,7 @@ ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const 
                             const glm::mat4& projection, const ShadowBias& bias, uint32_t mapSize) {
   ShadowFrame frame;
   frame.worldToLightClip.resize(gpuScene.shadowLayers);
+  frame.layerLights.resize(gpuScene.shadowLayers);
   frame.data.bias = glm::vec4(bias.constant, bias.slope, bias.normalOffset, 0.0f);
   glm::mat4 eyeToWorld = glm::inverse(view);
   std::vector<uint32_t> order = gpuLightOrder(scene);
@@ -515,8 +516,13 @@ ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const 
       frame.data.lookup[slot] = glm::vec4(1.0f - shadowView.texelSize * bias.constant,
                                           shadowView.texelSize * bias.slope, 0.0f, 0.0f);
     }
-    for (size_t face = 0; face < shadowView.viewProjection.size(); ++face)
+    glm::vec4 layerLight = light.type == LightType::Point
+                               ? glm::vec4(light.position, 1.0f)
+                               : glm::vec4(-glm::normalize(light.direction), 0.0f);
+    for (size_t face = 0; face < shadowView.viewProjection.size(); ++face) {
       frame.worldToLightClip[size_t(first) + face] = shadowView.viewProjection[face];
+      frame.layerLights[size_t(first) + face] = layerLight;
+    }
   }
   return frame;
 }

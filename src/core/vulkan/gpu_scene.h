@@ -209,6 +209,9 @@ LightValues lightValuesOf(const gpu::FrameData& frame);
 struct ShadowFrame {
   gpu::ShadowData data{};
   std::vector<glm::mat4> worldToLightClip;  // one per layer
+  // Per layer, its light in world space: a point light's position (w = 1)
+  // or the unit direction towards a directional light (w = 0).
+  std::vector<glm::vec4> layerLights;
 };
 ShadowFrame makeShadowFrame(const Scene& scene, const GpuScene& gpuScene, const glm::mat4& view,
                             const glm::mat4& projection, const ShadowBias& bias, uint32_t mapSize);
