@@ -22,9 +22,18 @@ void main() {
     vec3 ray = inOptics.w > 0.5 ? inPosition : vec3(0.0, 0.0, 1.0);
     float lengths = length(ray) * length(inNormal);
     float cosine = lengths > 0.0 ? clamp(abs(dot(ray, inNormal)) / lengths, 0.0, 1.0) : 1.0;
+    // Into a thinner medium (ior < 1) Schlick takes the transmitted angle's
+    // cosine, and past the critical angle everything is reflected
+    // (schlickFresnel in core/trace/optics.cpp, from air: n1 = 1, n2 = ior).
+    bool thinner = ior < 1.0;
+    float eta = 1.0 / ior;
+    float radicand = 1.0 - eta * eta * (1.0 - cosine * cosine);
+    if (thinner) cosine = sqrt(max(radicand, 0.0));
     float f0 = (1.0 - ior) / (1.0 + ior);
     f0 *= f0;
-    passed *= 1.0 - (f0 + (1.0 - f0) * pow(1.0 - cosine, 5.0));
+    float reflected =
+        thinner && radicand < 0.0 ? 1.0 : f0 + (1.0 - f0) * pow(1.0 - cosine, 5.0);
+    passed *= 1.0 - reflected;
   }
   outTransmittance = vec4(passed);
 }

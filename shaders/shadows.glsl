@@ -107,10 +107,14 @@ const bool shadowsLookedUp = shadowFilter != SHADOW_OFF;
 float shadowTap(vec3 uvDepth, float layer) {
   vec4 coordinate = vec4(uvDepth.xy, layer, uvDepth.z);
   float lit = texture(shadowMap, coordinate);
-  // Lit points (most) look up nothing more: llvmpipe skips a branch no lane takes.
+  // Where it says shadow: behind an opaque caster, or only translucent
+  // ones? llvmpipe 22.3 runs this for lit fragments too (it does not skip a
+  // branch no lane takes), so such a scene pays two more lookups per tap.
+  // One level each: zero gradients, as implicit ones are undefined inside
+  // a branch that varies per fragment.
   if (translucentShadows && lit < 1.0) {
-    lit = texture(opaqueShadowMap, coordinate) *
-          texture(transmittanceMap, vec3(uvDepth.xy, layer)).r;
+    lit = textureGrad(opaqueShadowMap, coordinate, vec2(0.0), vec2(0.0)) *
+          textureGrad(transmittanceMap, vec3(uvDepth.xy, layer), vec2(0.0), vec2(0.0)).r;
   }
   return lit;
 }

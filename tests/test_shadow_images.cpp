@@ -248,17 +248,17 @@ int greenAt(const ImageU8& image, const Camera& camera, glm::vec3 world) {
 struct GlassCase {
   const char* name;
   Light light;
+  float ior = 1.5f;
   friend void PrintTo(const GlassCase& c, std::ostream* os) { *os << c.name; }
 };
 
-class GlassShadow : public GpuTest, public ::testing::WithParamInterface<GlassCase> {};
-
-TEST_P(GlassShadow, FloorGetsWhatTheTracerPassesAndTheLitSideStaysLit) {
+// A ball of kt 0.85 and radius 1 at (0, 1.5, 0) over a floor: object 1.
+Scene glassBallScene(const Light& light, float ior) {
   Scene scene;
   scene.camera.eye = {0.0f, 5.0f, 6.0f};
   scene.camera.at = {0.0f, 0.5f, 0.0f};
   scene.ambient = glm::vec3(0.1f);
-  scene.lights.push_back(GetParam().light);
+  scene.lights.push_back(light);
   ShapeDesc floorShape{ShapeKind::Plane};
   floorShape.size = 12.0f;
   Material floor{glm::vec3(0.1f), glm::vec3(0.8f), glm::vec3(0.0f), 1.0f};
@@ -268,8 +268,15 @@ TEST_P(GlassShadow, FloorGetsWhatTheTracerPassesAndTheLitSideStaysLit) {
   ball.tessellation = 64;
   Material glass{glm::vec3(0.1f), glm::vec3(0.6f), glm::vec3(0.0f), 1.0f};
   glass.transparency = 0.85f;
-  glass.ior = 1.5f;
+  glass.ior = ior;
   scene.objects.push_back({"glass", scene.addShape(ball), translation({0.0f, 1.5f, 0.0f}), glass});
+  return scene;
+}
+
+class GlassShadow : public GpuTest, public ::testing::WithParamInterface<GlassCase> {};
+
+TEST_P(GlassShadow, FloorGetsWhatTheTracerPassesAndTheLitSideStaysLit) {
+  const Scene scene = glassBallScene(GetParam().light, GetParam().ior);
   const uint32_t width = 320, height = 240;
   TraceSettings trace;
   trace.width = width, trace.height = height, trace.samplesPerPixel = 1, trace.shadows = true;
@@ -321,20 +328,45 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         GlassCase{"directional",
                   {LightType::Directional, {}, {0.1f, -1.0f, 0.05f}, glm::vec3(0.9f)}},
-        GlassCase{"point", {LightType::Point, {0.3f, 7.0f, 0.2f}, {}, glm::vec3(0.9f)}}),
+        GlassCase{"point", {LightType::Point, {0.3f, 7.0f, 0.2f}, {}, glm::vec3(0.9f)}},
+        // Air in water, say: a thinner ball (ior 0.75) reflects everything
+        // past its critical angle, so its shadow's rim is black.
+        GlassCase{
+            "bubble", {LightType::Directional, {}, {0.1f, -1.0f, 0.05f}, glm::vec3(0.9f)}, 0.75f}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// The translucent layers exist while the scene has a transparent caster:
+// the same renderer draws the glass scene, then the scene with the ball
+// casting nothing (no such layers; prepare() drops them), then the glass
+// scene again, which must come out bit for bit as the first time; and the
+// middle one must differ (the ball's shadow is gone).
+TEST_F(ShadowImages, TranslucentLayersComeAndGoWithTheScene) {
+  Scene glass = glassBallScene({LightType::Point, {0.3f, 7.0f, 0.2f}, {}, glm::vec3(0.9f)}, 1.5f);
+  Scene clear = glass;
+  clear.objects[1].castsShadows = false;
+  const RenderSettings settings = shadowed(kDefaultShadowMethod);
+  const ImageU8 first = render(glass, settings);
+  const ImageU8 without = render(clear, settings);
+  const ImageU8 again = render(glass, settings);
+  EXPECT_TRUE(first.pixels == again.pixels);
+  EXPECT_FALSE(first.pixels == without.pixels);
+}
 
 // glTF BLEND without a texture (coverage, kt = 1 - the factor's alpha): the
 // shadow maps pass 1 - alpha per surface, as the tracer's shadow rays do,
-// with no Fresnel term. A card of alpha 0.4 (transparency 0.6) over a floor:
-// the floor under it gets 0.6 of the light in both renderers (within 3 of
-// 255); the code before the translucent layers cast a full shadow there.
+// with no Fresnel term. A card of alpha 0.4 (transparency 0.6) over a floor,
+// under a light 70 degrees from the vertical, where Fresnel would pass 0.505
+// instead of 0.6: the floor in its shadow gets 0.6 of the light in both
+// renderers (within 3 of 255); the code before the translucent layers cast a
+// full shadow there.
 TEST_F(ShadowImages, BlendedFactorCardPassesOneMinusItsAlpha) {
   Scene scene;
   scene.camera.eye = {0.0f, 4.0f, 5.0f};
   scene.camera.at = {0.0f, 0.0f, 0.0f};
   scene.ambient = glm::vec3(0.1f);
-  scene.lights.push_back({LightType::Directional, {}, {0.05f, -1.0f, 0.03f}, glm::vec3(0.9f)});
+  const float tilt = glm::radians(70.0f);
+  const glm::vec3 travel(std::sin(tilt), -std::cos(tilt), 0.0f);
+  scene.lights.push_back({LightType::Directional, {}, travel, glm::vec3(0.9f)});
   ShapeDesc floorShape{ShapeKind::Plane};
   floorShape.size = 12.0f;
   Material floor{glm::vec3(0.1f), glm::vec3(0.8f), glm::vec3(0.0f), 1.0f};
@@ -354,7 +386,9 @@ TEST_F(ShadowImages, BlendedFactorCardPassesOneMinusItsAlpha) {
   RenderSettings settings{width, height, ShadingModel::Phong};
   settings.shadows = kDefaultShadowMethod;
   const ImageU8 raster = render(scene, settings);
-  const glm::vec3 under(-2.0f - 0.05f, 0.0f, -0.03f), open(1.0f, 0.0f, 1.0f);
+  // Where the light through the card's centre (-2, 1, 0) meets the floor.
+  const glm::vec3 under = glm::vec3(-2.0f, 1.0f, 0.0f) + travel / std::cos(tilt);
+  const glm::vec3 open(0.0f, 0.0f, 2.0f);
   const int lit = greenAt(traced, scene.camera, open);
   const int expected = greenAt(traced, scene.camera, under);
   const int got = greenAt(raster, scene.camera, under);

@@ -2,7 +2,8 @@
 // Shadow pass: the depth of the shadow casters as each light sees them, one
 // layer of a depth array per light view (a directional light's one, a point
 // light's six cube faces: six passes, one per face).
-// Reads: the scene's vertex and index buffers (positions only); the draws
+// Reads: the scene's vertex and index buffers (positions; translucent
+// casters also their normals); the draws
 // whose object casts shadows, culled against each view's frustum. Casters
 // with alphaMode MASK and a base colour texture also read their uv and their
 // material's set (ForwardPass's material layout) and cut the same holes; so
