@@ -201,7 +201,7 @@ struct ObjectData {
 #define TEXTURE_UV_TRANSFORM 16
 // glTF BLEND (Material::alphaCoverage) with a diffuse map: the texel's alpha
 // scales the opacity kd.w the blended draw writes (and, in the shadow maps,
-// cuts holes where it is below one half: shadow_pass.cpp).
+// what the texel passes: shadow_pass.cpp).
 #define TEXTURE_ALPHA 32
 
 // Per draw, as push constants: the material and the object's index. Fragment

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/type_ptr.hpp>
+#include <optional>
 
 #include "core/scene/frustum.h"
 #include "core/vulkan/barriers.h"
@@ -18,27 +19,25 @@ namespace {
 // shadow_depth_masked.*'s push constants.
 struct MaskedShadowDraw {
   glm::mat4 objectToLightClip;
-  glm::vec4 texturing;  // xy = uv scale, z = alpha threshold, w = uv rotation
+  // xy = uv scale, z = alpha threshold (a blended caster's transmittance:
+  // its opacity kd.w), w = uv rotation
+  glm::vec4 texturing;
   glm::vec4 diffuseUv;  // KHR_texture_transform: xy = offset, zw = scale
 };
 
-// A caster whose base colour texture's alpha cuts holes in its shadow:
-// alphaMode MASK below its cut-off, and BLEND over a texture with alpha
-// (TEXTURE_ALPHA) where the texel covers less than half. The depth array
-// holds depth, not how much light passes, so a blended texel either casts
-// or not; the tracer's shadow rays pass 1 - alpha. The factor's alpha (the
-// material's kt) is left out here: only casters without such a texture go
-// through the translucent layers (ShadowPass::isTranslucentCaster).
-constexpr float kBlendCasterCoverage = 0.5f;
-
+// A caster whose base colour texture's alpha matters to its shadow: alphaMode
+// MASK (cut below its cut-off, in the depth array) and BLEND over a texture
+// with alpha (TEXTURE_ALPHA: a translucent caster whose every texel passes
+// 1 - its coverage, kd.w times the texel's alpha, as the tracer's shadow
+// rays do). They read their uv and their material's set.
 bool isMaskedCaster(const DrawItem& draw) {
   int32_t maps = draw.constants.object.y;
   return draw.textured && (maps & TEXTURE_DIFFUSE) && (draw.masked || (maps & TEXTURE_ALPHA));
 }
 
-// The texel alpha below which a masked caster's fragment casts nothing.
-float casterAlphaThreshold(const DrawItem& draw) {
-  return draw.masked ? draw.constants.ka.w : kBlendCasterCoverage;
+// glTF BLEND over a texture with alpha: translucent, texel by texel.
+bool isBlendedTextureCaster(const DrawItem& draw) {
+  return isMaskedCaster(draw) && !draw.masked;
 }
 
 // shadow_translucent.*'s push constants.
@@ -68,9 +67,10 @@ glm::mat4 worldToLightFrame(const glm::vec4& light) {
 }  // namespace
 
 bool ShadowPass::isTranslucentCaster(const DrawItem& draw) {
-  // kd.w = 1 - kt. A texture that cuts holes keeps the caster in the depth
-  // array (isMaskedCaster), whatever its kt.
-  return draw.castsShadows && !draw.hidden && draw.constants.kd.w < 1.0f && !isMaskedCaster(draw);
+  // kd.w = 1 - kt. A MASK texture keeps the caster in the depth array
+  // (isMaskedCaster), whatever its kt.
+  return draw.castsShadows && !draw.hidden &&
+         (isBlendedTextureCaster(draw) || (draw.constants.kd.w < 1.0f && !isMaskedCaster(draw)));
 }
 
 bool ShadowPass::anyTranslucentCaster(std::span<const DrawItem> draws) {
@@ -116,6 +116,7 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
   translucentLayout_ = PipelineLayout(device, layout);
   translucentVertex_ = loadShader(device, "shadow_translucent.vert");
   translucentFragment_ = loadShader(device, "shadow_translucent.frag");
+  texturedTranslucentFragment_ = loadShader(device, "shadow_translucent_textured.frag");
 
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   // One tap per texture() call: the filters are taps in the shader (PCF).
@@ -219,20 +220,24 @@ VkPipeline ShadowPass::pipeline(bool masked, bool depthClamp) {
   return slot;
 }
 
-Pipeline ShadowPass::createTranslucentPipeline(bool depthClamp) const {
+Pipeline ShadowPass::createTranslucentPipeline(bool depthClamp, bool textured) const {
   VkPipelineShaderStageCreateInfo stages[2] = {
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = translucentVertex_;
+  stages[0].module = textured ? maskedVertex_.get() : translucentVertex_.get();
   stages[0].pName = "main";
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = translucentFragment_;
+  stages[1].module = textured ? texturedTranslucentFragment_.get() : translucentFragment_.get();
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  // A blended texture's caster (shadow_depth_masked.*) reads its uv instead.
   VkVertexInputAttributeDescription attributes[] = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)}};
+      textured
+          ? VkVertexInputAttributeDescription{1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}
+          : VkVertexInputAttributeDescription{1, 0, VK_FORMAT_R32G32B32_SFLOAT,
+                                              offsetof(Vertex, normal)}};
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertexInput.vertexBindingDescriptionCount = 1;
@@ -265,13 +270,13 @@ Pipeline ShadowPass::createTranslucentPipeline(bool depthClamp) const {
   desc.blend.alphaBlendOp = VK_BLEND_OP_ADD;
   desc.blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT;
   desc.colorFormat = kTransmittanceFormat;
-  desc.layout = translucentLayout_;
+  desc.layout = textured ? maskedLayout_.get() : translucentLayout_.get();
   return createGraphicsPipeline(context_.device(), desc);
 }
 
-VkPipeline ShadowPass::translucentPipeline(bool depthClamp) {
-  Pipeline& slot = translucentPipelines_[depthClamp ? 1 : 0];
-  if (!slot) slot = createTranslucentPipeline(depthClamp);
+VkPipeline ShadowPass::translucentPipeline(bool depthClamp, bool textured) {
+  Pipeline& slot = translucentPipelines_[depthClamp ? 1 : 0][textured ? 1 : 0];
+  if (!slot) slot = createTranslucentPipeline(depthClamp, textured);
   return slot;
 }
 
@@ -542,9 +547,11 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedLayout_, 0, 1, &set, 0,
                                 nullptr);
         const gpu::DrawConstants& constants = draw.constants;
+        // MASK (a BLEND caster is translucent: recordTranslucent).
+        assert(draw.masked);
         MaskedShadowDraw push{objectToClip,
                               glm::vec4(constants.texturing.x, constants.texturing.y,
-                                        casterAlphaThreshold(draw), constants.texturing.w),
+                                        constants.ka.w, constants.texturing.w),
                               constants.diffuseUv};
         vkCmdPushConstants(cmd, maskedLayout_,
                            VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
@@ -559,7 +566,7 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
     vkCmdEndRendering(cmd);
     if (translucent()) {
       recordTranslucent(cmd, scene, translucentCasters, layer, worldToLightClip[layer],
-                        layerLights[layer], objectTransforms, depthClamp);
+                        layerLights[layer], objectTransforms, materialSets, depthClamp);
       drawn += uint32_t(translucentCasters.size());
     }
   }
@@ -577,7 +584,8 @@ uint32_t ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene,
 void ShadowPass::recordTranslucent(VkCommandBuffer cmd, const GpuScene& scene,
                                    std::span<const DrawItem* const> casters, size_t layer,
                                    const glm::mat4& worldToLightClip, const glm::vec4& light,
-                                   std::span<const glm::mat4> objectTransforms, bool depthClamp) {
+                                   std::span<const glm::mat4> objectTransforms,
+                                   std::span<const VkDescriptorSet> materialSets, bool depthClamp) {
   uint32_t size = map_.desc().width;
   VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
   VkRect2D scissor{{0, 0}, {size, size}};
@@ -638,14 +646,36 @@ void ShadowPass::recordTranslucent(VkCommandBuffer cmd, const GpuScene& scene,
   vkCmdBeginRendering(cmd, &rendering);
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, translucentPipeline(depthClamp));
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
   vkCmdBindIndexBuffer(cmd, scene.indices.get(), 0, VK_INDEX_TYPE_UINT32);
   glm::mat4 worldToLight = worldToLightFrame(light);
+  std::optional<bool> texturedBound;
   for (const DrawItem* draw : casters) {
     const glm::mat4& objectToWorld = objectTransforms[size_t(draw->constants.object.x)];
-    TranslucentShadowDraw push{worldToLightClip * objectToWorld, worldToLight * objectToWorld};
     const gpu::DrawConstants& constants = draw->constants;
+    bool textured = isBlendedTextureCaster(*draw);
+    if (texturedBound != textured) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                        translucentPipeline(depthClamp, textured));
+      texturedBound = textured;
+    }
+    if (textured) {
+      // Each texel passes 1 - its coverage, kd.w times its alpha.
+      assert(draw->material < materialSets.size() && "textured caster without its material set");
+      VkDescriptorSet set = materialSets[draw->material];
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedLayout_, 0, 1, &set, 0,
+                              nullptr);
+      MaskedShadowDraw push{worldToLightClip * objectToWorld,
+                            glm::vec4(constants.texturing.x, constants.texturing.y, constants.kd.w,
+                                      constants.texturing.w),
+                            constants.diffuseUv};
+      vkCmdPushConstants(cmd, maskedLayout_,
+                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
+                         &push);
+      vkCmdDrawIndexed(cmd, draw->indexCount, 1, draw->firstIndex, draw->vertexOffset, 0);
+      continue;
+    }
+    TranslucentShadowDraw push{worldToLightClip * objectToWorld, worldToLight * objectToWorld};
     // The affine map's free last row: kt, ior, Fresnel (not for coverage
     // materials, whose optics.y is 0), point light.
     float kt = 1.0f - constants.kd.w;

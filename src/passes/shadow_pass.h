@@ -3,20 +3,21 @@
 // layer of a depth array per light view (a directional light's one, a point
 // light's six cube faces: six passes, one per face).
 // Reads: the scene's vertex and index buffers (positions; translucent
-// casters also their normals); the draws
-// whose object casts shadows, culled against each view's frustum. Casters
-// with alphaMode MASK and a base colour texture also read their uv and their
-// material's set (ForwardPass's material layout) and cut the same holes; so
-// do BLEND ones over a texture with alpha, where a texel covers less than
-// half (shadow_pass.cpp).
-// Translucent casters (kt > 0 and no texture cutting holes: glass, glTF
-// BLEND factors) pass some light. When a scene has any (prepare's
+// casters also their normals); the draws whose object casts shadows, culled
+// against each view's frustum. Casters with alphaMode MASK and a base colour
+// texture also read their uv and their material's set (ForwardPass's
+// material layout) and cut the same holes; BLEND ones over a texture with
+// alpha read them too, as translucent casters (below) whose texels pass 1 -
+// their coverage (kd.w times the texel's alpha), as the tracer's shadow rays
+// do.
+// Translucent casters (kt > 0 and no MASK texture: glass, glTF BLEND) pass
+// some light. When a scene has any (prepare's
 // `translucent`), each layer also gets the opaque casters' depth alone (a
 // second depth array) and the product of what each crossing of a
 // translucent one passes (an R16F array, multiplied into: kt (1 - F),
 // Schlick's F at the light's angle to the surface, or kt alone for coverage
-// materials). The lookup (shaders/shadows.glsl, SHADOW_TRANSLUCENT) reads
-// them only where the depth array, which holds every caster, says shadow:
+// materials, texel by texel over a texture with alpha). The lookup (shaders/shadows.glsl,
+// SHADOW_TRANSLUCENT) reads them only where the depth array, which holds every caster, says shadow:
 // behind no opaque caster, the point gets the transmittance. One layer
 // cannot tell the crossings before a point from those after it: a point
 // between two translucent surfaces (the far side of a glass sphere) gets
@@ -107,14 +108,16 @@ class ShadowPass {
  private:
   Pipeline createDepthPipeline(bool masked, bool depthClamp) const;
   VkPipeline pipeline(bool masked, bool depthClamp);  // created on first use
-  Pipeline createTranslucentPipeline(bool depthClamp) const;
-  VkPipeline translucentPipeline(bool depthClamp);  // created on first use
+  // `textured`: glTF BLEND over a texture with alpha (its uv and material set).
+  Pipeline createTranslucentPipeline(bool depthClamp, bool textured) const;
+  VkPipeline translucentPipeline(bool depthClamp, bool textured);  // created on first use
   // One layer's translucent casters: their depth over a copy of the opaque
   // casters' (into the depth array), then their transmittance.
   void recordTranslucent(VkCommandBuffer cmd, const GpuScene& scene,
                          std::span<const DrawItem* const> casters, size_t layer,
                          const glm::mat4& worldToLightClip, const glm::vec4& light,
-                         std::span<const glm::mat4> objectTransforms, bool depthClamp);
+                         std::span<const glm::mat4> objectTransforms,
+                         std::span<const VkDescriptorSet> materialSets, bool depthClamp);
   std::vector<ImageView> makeLayerViews(const Image& image, VkFormat format,
                                         VkImageAspectFlags aspect) const;
 
@@ -125,8 +128,8 @@ class ShadowPass {
   ShaderModule maskedVertex_, maskedFragment_;
   Pipeline pipelines_[2][2];          // [masked][depth clamp]
   PipelineLayout translucentLayout_;  // push: TranslucentShadowDraw
-  ShaderModule translucentVertex_, translucentFragment_;
-  Pipeline translucentPipelines_[2];  // [depth clamp]
+  ShaderModule translucentVertex_, translucentFragment_, texturedTranslucentFragment_;
+  Pipeline translucentPipelines_[2][2];  // [depth clamp][textured]
   Sampler sampler_;
   Sampler transmittanceSampler_;
   Image placeholder_;  // bound while no map exists: lavapipe crashes on unwritten descriptors
