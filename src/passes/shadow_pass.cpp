@@ -163,31 +163,34 @@ ShadowPass::ShadowPass(const Context& context, VkDescriptorSetLayout materialLay
   });
 }
 
-Pipeline ShadowPass::createDepthPipeline(bool masked, bool depthClamp) const {
+Pipeline ShadowPass::createCasterPipeline(VkShaderModule vertex, VkShaderModule fragment,
+                                          const VkVertexInputAttributeDescription* second,
+                                          bool depthClamp, GraphicsPipelineDesc desc) const {
   VkPipelineShaderStageCreateInfo stages[2] = {
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
       {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = masked ? maskedVertex_.get() : vertex_.get();
+  stages[0].module = vertex;
   stages[0].pName = "main";
   stages[1] = stages[0];
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = maskedFragment_;
+  stages[1].module = fragment;
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  // Masked casters also read the uv.
   VkVertexInputAttributeDescription attributes[] = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-      {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+      second ? *second : VkVertexInputAttributeDescription{}};
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vertexInput.vertexBindingDescriptionCount = 1;
   vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = masked ? 2 : 1;
+  vertexInput.vertexAttributeDescriptionCount = second ? 2 : 1;
   vertexInput.pVertexAttributeDescriptions = attributes;
   VkPipelineRasterizationStateCreateInfo raster{
       VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
   raster.polygonMode = VK_POLYGON_MODE_FILL;
-  // Both faces: an open surface (a plane) casts from either side.
+  // Both faces: an open surface (a plane) casts from either side, and a
+  // closed translucent one passes light twice (in and out), as the tracer's
+  // shadow rays count its crossings.
   raster.cullMode = VK_CULL_MODE_NONE;
   raster.lineWidth = 1.0f;
   // A caster between the light and its near plane is flattened onto the
@@ -197,21 +200,29 @@ Pipeline ShadowPass::createDepthPipeline(bool masked, bool depthClamp) const {
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  desc.stages = {stages, fragment ? 2u : 1u};
+  desc.vertexInput = &vertexInput;
+  desc.raster = &raster;
+  desc.multisample = &multisample;
+  return createGraphicsPipeline(context_.device(), desc);
+}
+
+Pipeline ShadowPass::createDepthPipeline(bool masked, bool depthClamp) const {
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = VK_TRUE;
   depth.depthWriteEnable = VK_TRUE;
   depth.depthCompareOp = VK_COMPARE_OP_LESS;
   // No colour attachment: the rendering scope's one slot stays empty.
-  return createGraphicsPipeline(context_.device(), {{stages, masked ? 2u : 1u},
-                                                    &vertexInput,
-                                                    &raster,
-                                                    &multisample,
-                                                    &depth,
-                                                    {},
-                                                    VK_FORMAT_UNDEFINED,
-                                                    kDepthFormat,
-                                                    masked ? maskedLayout_.get() : layout_.get()});
+  GraphicsPipelineDesc desc;
+  desc.depth = &depth;
+  desc.depthFormat = kDepthFormat;
+  desc.layout = masked ? maskedLayout_.get() : layout_.get();
+  // Masked casters also read the uv.
+  const VkVertexInputAttributeDescription uv{1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)};
+  return createCasterPipeline(masked ? maskedVertex_.get() : vertex_.get(),
+                              masked ? maskedFragment_.get() : VK_NULL_HANDLE,
+                              masked ? &uv : nullptr, depthClamp, desc);
 }
 
 VkPipeline ShadowPass::pipeline(bool masked, bool depthClamp) {
@@ -221,45 +232,11 @@ VkPipeline ShadowPass::pipeline(bool masked, bool depthClamp) {
 }
 
 Pipeline ShadowPass::createTranslucentPipeline(bool depthClamp, bool textured) const {
-  VkPipelineShaderStageCreateInfo stages[2] = {
-      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-      {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = textured ? maskedVertex_.get() : translucentVertex_.get();
-  stages[0].pName = "main";
-  stages[1] = stages[0];
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = textured ? texturedTranslucentFragment_.get() : translucentFragment_.get();
-  VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  // A blended texture's caster (shadow_depth_masked.*) reads its uv instead.
-  VkVertexInputAttributeDescription attributes[] = {
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-      textured
-          ? VkVertexInputAttributeDescription{1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}
-          : VkVertexInputAttributeDescription{1, 0, VK_FORMAT_R32G32B32_SFLOAT,
-                                              offsetof(Vertex, normal)}};
-  VkPipelineVertexInputStateCreateInfo vertexInput{
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertexInput.vertexBindingDescriptionCount = 1;
-  vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = 2;
-  vertexInput.pVertexAttributeDescriptions = attributes;
-  VkPipelineRasterizationStateCreateInfo raster{
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  // Both faces: a closed surface passes light twice (in and out), as the
-  // tracer's shadow rays count its crossings.
-  raster.cullMode = VK_CULL_MODE_NONE;
-  raster.lineWidth = 1.0f;
-  // The same fragments as the depth pass covers (pancaking, as there).
-  raster.depthClampEnable = depthClamp && context_.features().depthClamp;
-  VkPipelineMultisampleStateCreateInfo multisample{
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkPipelineDepthStencilStateCreateInfo depth{
       VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   // Every crossing counts, in any order: no depth test.
-  GraphicsPipelineDesc desc{{stages, 2u}, &vertexInput, &raster, &multisample, &depth};
+  GraphicsPipelineDesc desc;
+  desc.depth = &depth;
   // dst = dst * src: the product of every crossing's transmittance.
   desc.blend.blendEnable = VK_TRUE;
   desc.blend.srcColorBlendFactor = VK_BLEND_FACTOR_ZERO;
@@ -271,7 +248,16 @@ Pipeline ShadowPass::createTranslucentPipeline(bool depthClamp, bool textured) c
   desc.blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT;
   desc.colorFormat = kTransmittanceFormat;
   desc.layout = textured ? maskedLayout_.get() : translucentLayout_.get();
-  return createGraphicsPipeline(context_.device(), desc);
+  // A blended texture's caster (shadow_depth_masked.*) reads its uv, glass its normal.
+  const VkVertexInputAttributeDescription second =
+      textured
+          ? VkVertexInputAttributeDescription{1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}
+          : VkVertexInputAttributeDescription{1, 0, VK_FORMAT_R32G32B32_SFLOAT,
+                                              offsetof(Vertex, normal)};
+  return createCasterPipeline(
+      textured ? maskedVertex_.get() : translucentVertex_.get(),
+      textured ? texturedTranslucentFragment_.get() : translucentFragment_.get(), &second,
+      depthClamp, desc);
 }
 
 VkPipeline ShadowPass::translucentPipeline(bool depthClamp, bool textured) {

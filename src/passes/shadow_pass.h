@@ -37,6 +37,7 @@
 #include "core/vulkan/context.h"
 #include "core/vulkan/gpu_scene.h"
 #include "core/vulkan/resources.h"
+#include "passes/graphics_pipeline.h"
 
 namespace shadelab {
 
@@ -106,6 +107,12 @@ class ShadowPass {
   VkSampler transmittanceSampler() const { return transmittanceSampler_.get(); }
 
  private:
+  // What every caster pipeline shares (both faces, depth clamp, one sample,
+  // the position and an optional `second` attribute) around `desc`'s depth,
+  // blend, formats and layout; `fragment` may be null (depth only).
+  Pipeline createCasterPipeline(VkShaderModule vertex, VkShaderModule fragment,
+                                const VkVertexInputAttributeDescription* second, bool depthClamp,
+                                GraphicsPipelineDesc desc) const;
   Pipeline createDepthPipeline(bool masked, bool depthClamp) const;
   VkPipeline pipeline(bool masked, bool depthClamp);  // created on first use
   // `textured`: glTF BLEND over a texture with alpha (its uv and material set).
